@@ -1,0 +1,68 @@
+#include "boundaryModels/DummyParticlesAdami2012.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace sph {
+
+template <int D>
+DummyParticlesAdami2012<D>::DummyParticlesAdami2012(const Dictionary& dict)
+    : noSlip_(dict.getOrDefault("noSlip", true)), clampNegativePressure_(dict.getOrDefault("clampNegativePressure", true)) {}
+
+template <int D>
+std::string DummyParticlesAdami2012<D>::describe() const {
+    return std::string("dummyParticles: noSlip ") + (noSlip_ ? "yes" : "no") + ", clampNegativePressure " + (clampNegativePressure_ ? "yes" : "no");
+}
+
+template <int D>
+void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) {
+    const Vec<D> gravity = system.gravityAt(t);  // fixed walls: a_w = 0
+    const Vec<D>* xFluid = system.fluid.position.data();
+    const Vec<D>* vFluid = system.fluid.vector("velocity").data();
+    const double* pFluid = system.fluid.scalar("pressure").data();
+    const double* rhoFluid = system.fluid.scalar("density").data();
+    const Vec<D>* xWall = system.walls.position.data();
+    const Vec<D>* vWall = system.walls.vector("velocity").data();
+    double* pWall = system.walls.scalar("pressure").data();
+    double* rhoWall = system.walls.scalar("density").data();
+    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
+    const double radius = system.supportRadius();
+    const auto& cells = system.fluidCells();
+    (void)xFluid;
+
+    std::visit(
+        [&](const auto& kernel, const auto& eos) {
+            const double pMin = clampNegativePressure_ ? eos.p0 : -std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static)
+            for (std::size_t w = begin; w < end; ++w) {
+                double weight = 0.0, pressureSum = 0.0;
+                Vec<D> densityMoment = Vec<D>::Zero(), velocitySum = Vec<D>::Zero();
+                cells.forEachNeighbour(xWall[w], radius, [&](std::uint32_t f, const Vec<D>& r, double r2) {
+                    const double W = kernel.value(std::sqrt(r2));
+                    weight += W;
+                    pressureSum += pFluid[f] * W;
+                    densityMoment += (rhoFluid[f] * W) * r;
+                    velocitySum += W * vFluid[f];
+                });
+                if (weight > 0.0) {
+                    pWall[w] = std::max((pressureSum + gravity.dot(densityMoment)) / weight, pMin);
+                    const Vec<D> smoothed = velocitySum / weight;
+                    if (vViscous) vViscous[w] = noSlip_ ? Vec<D>(2.0 * vWall[w] - smoothed) : smoothed;
+                } else {
+                    pWall[w] = eos.p0;
+                    if (vViscous) vViscous[w] = vWall[w];
+                }
+                // The inverse Tait law has no solution below p0 - B; keep the density positive.
+                rhoWall[w] = eos.density(std::max(pWall[w], eos.p0 - 0.999 * eos.stiffness()));
+            }
+        },
+        system.models().kernel, system.models().eos);
+}
+
+template class DummyParticlesAdami2012<1>;
+template class DummyParticlesAdami2012<2>;
+template class DummyParticlesAdami2012<3>;
+
+}  // namespace sph

@@ -1,0 +1,30 @@
+// Fixed dummy wall particles with the generalised wall condition of Adami, Hu & Adams (2012).
+// Each wall particle w takes its pressure from the fluid particles f around it:
+//   p_w = [ sum_f p_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf ] / sum_f W_wf,   r_wf = x_w - x_f
+//   rho_w = rho(p_w) by the inverse equation of state
+// and, for the viscous term, the velocity  2 v_w - v~_w (noSlip) or v~_w (slip), with
+// v~_w = sum_f v_f W_wf / sum_f W_wf. Negative wall pressure is clamped to the background
+// pressure unless clampNegativePressure is off (tension at a wall makes fluid stick to it).
+// Reference: S. Adami, X.Y. Hu, N.A. Adams, J. Comput. Phys. 231 (2012) 7057-7075, Eqs. (22)-(28).
+// Example (constant/boundaryProperties):
+//   tank { type dummyParticles; noSlip yes; clampNegativePressure yes; }
+#pragma once
+
+#include "boundaryModels/BoundaryModel.hpp"
+
+namespace sph {
+
+template <int D>
+class DummyParticlesAdami2012 : public BoundaryModel<D> {
+public:
+    explicit DummyParticlesAdami2012(const Dictionary& dict);
+
+    std::string describe() const override;
+    void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
+
+private:
+    bool noSlip_;
+    bool clampNegativePressure_;
+};
+
+}  // namespace sph

@@ -1,0 +1,82 @@
+#include "core/ParticleSet.hpp"
+
+#include <stdexcept>
+
+namespace sph {
+
+namespace {
+
+template <class T>
+void permuteValues(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
+    std::vector<T> reordered(values.size());
+    for (std::size_t i = 0; i < order.size(); ++i) reordered[i] = values[order[i]];
+    values.swap(reordered);
+}
+
+template <class Map>
+auto& fieldOf(Map& fields, const std::string& set, const std::string& field) {
+    auto it = fields.find(field);
+    if (it == fields.end()) throw std::logic_error("particle set '" + set + "' has no field '" + field + "'");
+    return it->second.values;
+}
+
+}  // namespace
+
+template <int D>
+void ParticleSet<D>::resize(std::size_t owned) {
+    owned_ = owned;
+    position.resize(owned, Vec<D>::Zero());
+    globalId.resize(owned, -1);
+    for (auto& [name, f] : scalars_) f.values.resize(owned, 0.0);
+    for (auto& [name, f] : vectors_) f.values.resize(owned, Vec<D>::Zero());
+    for (auto& [name, f] : integers_) f.values.resize(owned, 0);
+}
+
+template <int D>
+std::vector<double>& ParticleSet<D>::addScalar(const std::string& field, double initial, bool written) {
+    auto [it, inserted] = scalars_.try_emplace(field, Field<double>{std::vector<double>(size(), initial), written});
+    if (!inserted) it->second.written = it->second.written || written;
+    return it->second.values;
+}
+
+template <int D>
+std::vector<Vec<D>>& ParticleSet<D>::addVector(const std::string& field, const Vec<D>& initial, bool written) {
+    auto [it, inserted] = vectors_.try_emplace(field, Field<Vec<D>>{std::vector<Vec<D>>(size(), initial), written});
+    if (!inserted) it->second.written = it->second.written || written;
+    return it->second.values;
+}
+
+template <int D>
+std::vector<int>& ParticleSet<D>::addInteger(const std::string& field, int initial, bool written) {
+    auto [it, inserted] = integers_.try_emplace(field, Field<int>{std::vector<int>(size(), initial), written});
+    if (!inserted) it->second.written = it->second.written || written;
+    return it->second.values;
+}
+
+template <int D>
+std::vector<double>& ParticleSet<D>::scalar(const std::string& field) { return fieldOf(scalars_, name_, field); }
+template <int D>
+const std::vector<double>& ParticleSet<D>::scalar(const std::string& field) const { return fieldOf(scalars_, name_, field); }
+template <int D>
+std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) { return fieldOf(vectors_, name_, field); }
+template <int D>
+const std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) const { return fieldOf(vectors_, name_, field); }
+template <int D>
+std::vector<int>& ParticleSet<D>::integer(const std::string& field) { return fieldOf(integers_, name_, field); }
+template <int D>
+const std::vector<int>& ParticleSet<D>::integer(const std::string& field) const { return fieldOf(integers_, name_, field); }
+
+template <int D>
+void ParticleSet<D>::permute(const std::vector<std::uint32_t>& order) {
+    permuteValues(position, order);
+    permuteValues(globalId, order);
+    for (auto& [name, f] : scalars_) permuteValues(f.values, order);
+    for (auto& [name, f] : vectors_) permuteValues(f.values, order);
+    for (auto& [name, f] : integers_) permuteValues(f.values, order);
+}
+
+template class ParticleSet<1>;
+template class ParticleSet<2>;
+template class ParticleSet<3>;
+
+}  // namespace sph

@@ -1,0 +1,73 @@
+// Run-time selection: a family of models, each registered under a name by an explicit
+// registration function (no static initialisers), and created from the word a case gives.
+// An unknown word is a FatalError naming the family, the word, its file and line, and the
+// sorted valid names; registering a name twice is an error too.
+#pragma once
+
+#include "core/FatalError.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+// What `-listModels` prints about one coefficient.
+struct CoefficientDoc {
+    std::string keyword;
+    std::string defaultValue;  // empty: required
+    std::string meaning;
+};
+
+struct ModelDoc {
+    std::string summary;
+    std::string reference;
+    std::vector<CoefficientDoc> coefficients;
+};
+
+template <class Product, class... Args>
+class Registry {
+public:
+    using Factory = std::function<Product(Args...)>;
+
+    explicit Registry(std::string family) : family_(std::move(family)) {}
+
+    void add(const std::string& name, ModelDoc doc, Factory factory) {
+        if (entries_.count(name)) throw FatalError("error: " + family_ + " '" + name + "' is registered twice");
+        entries_.emplace(name, Item{std::move(doc), std::move(factory)});
+    }
+
+    bool has(const std::string& name) const { return entries_.count(name) != 0; }
+
+    // `where` is the location of the word in the case, for the error message.
+    Product create(const std::string& name, const SourceLocation& where, Args... args) const {
+        auto it = entries_.find(name);
+        if (it == entries_.end()) throw FatalError(where, unknownMessage(name));
+        return it->second.factory(std::forward<Args>(args)...);
+    }
+
+    std::string unknownMessage(const std::string& name) const {
+        std::string message = "unknown " + family_ + " '" + name + "'; valid " + family_ + " names are:";
+        for (const auto& [valid, item] : entries_) message += "\n    " + valid;
+        return message;
+    }
+
+    const std::string& family() const { return family_; }
+    std::vector<std::string> names() const {
+        std::vector<std::string> result;
+        for (const auto& [name, item] : entries_) result.push_back(name);
+        return result;  // std::map keeps them sorted
+    }
+    const ModelDoc& doc(const std::string& name) const { return entries_.at(name).doc; }
+
+private:
+    struct Item {
+        ModelDoc doc;
+        Factory factory;
+    };
+    std::string family_;
+    std::map<std::string, Item> entries_;
+};
+
+}  // namespace sph

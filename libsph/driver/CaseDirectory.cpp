@@ -1,0 +1,49 @@
+#include "driver/CaseDirectory.hpp"
+
+#include "io/TimeName.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace sph {
+
+std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory) {
+    std::vector<TimeDirectory> times;
+    std::error_code ec;
+    for (const auto& item : std::filesystem::directory_iterator(caseDirectory, ec)) {
+        if (!item.is_directory()) continue;
+        const std::string name = item.path().filename().string();
+        char* end = nullptr;
+        const double t = std::strtod(name.c_str(), &end);
+        if (name.empty() || end != name.c_str() + name.size() || !std::isfinite(t)) continue;
+        if (!std::filesystem::exists(item.path() / "fluid.vtu")) continue;
+        times.push_back({t, item.path()});
+    }
+    std::sort(times.begin(), times.end(), [](const TimeDirectory& a, const TimeDirectory& b) { return a.time < b.time; });
+    return times;
+}
+
+TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict) {
+    const std::vector<TimeDirectory> times = findTimeDirectories(caseDirectory);
+    if (times.empty())
+        throw FatalError("error: case '" + caseDirectory.string() +
+                         "' has no time directory with a fluid.vtu state; run generateParticles first to write 0/");
+    const std::string startFrom = controlDict.getOrDefault<std::string>("startFrom", "latestTime");
+    if (startFrom == "latestTime") return times.back();
+    if (startFrom == "startTime") {
+        const double startTime = controlDict.get<double>("startTime");
+        for (const TimeDirectory& t : times)
+            if (std::abs(t.time - startTime) <= 1e-9 * std::max(1.0, std::abs(startTime))) return t;
+        std::string valid;
+        for (const TimeDirectory& t : times) valid += " " + timeName(t.time);
+        controlDict.fail("startTime", "no time directory " + timeName(startTime) + " with a fluid.vtu; written times are:" + valid);
+    }
+    controlDict.fail("startFrom", "expected latestTime or startTime, found '" + startFrom + "'");
+}
+
+Dictionary readCaseDictionary(const std::filesystem::path& caseDirectory, const std::string& relative) {
+    return Dictionary::fromFile(caseDirectory / relative, std::filesystem::path(relative).filename().string());
+}
+
+}  // namespace sph

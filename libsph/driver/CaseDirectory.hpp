@@ -1,0 +1,32 @@
+// The layout of a case directory, and the dictionaries the solver reads from it:
+//   system/controlDict          run control and function objects
+//   system/sphSchemes           kernel, density formulation, viscosity, density diffusion
+//   system/timeIntegration      integrator, Courant number, step limits
+//   constant/fluidProperties    rho0, equation of state, nu, gravity
+//   constant/boundaryProperties one boundary model per wall patch
+//   <time>/fluid.vtu, walls.vtu particle state at each written time (0/ from generateParticles)
+#pragma once
+
+#include "io/Dictionary.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace sph {
+
+struct TimeDirectory {
+    double time;
+    std::filesystem::path path;
+};
+
+// Time directories holding a complete state (fluid.vtu), in increasing time.
+std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory);
+
+// The time directory controlDict's startFrom/startTime selects (FatalError if there is none).
+TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict);
+
+// Reads <case>/<relative>, naming the case's file in every message.
+Dictionary readCaseDictionary(const std::filesystem::path& caseDirectory, const std::string& relative);
+
+}  // namespace sph

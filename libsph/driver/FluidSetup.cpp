@@ -1,0 +1,164 @@
+#include "driver/FluidSetup.hpp"
+
+#include "io/SelectByType.hpp"
+#include "physics/FluidProperties.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace sph {
+
+namespace {
+
+DensityFormulation selectDensity(const Dictionary& dict) {
+    static const std::map<std::string, DensityFormulation> formulations{{"continuity", DensityFormulation::Continuity},
+                                                                        {"summation", DensityFormulation::Summation}};
+    const std::string name = dict.get<std::string>("type");
+    const auto it = formulations.find(name);
+    if (it == formulations.end())
+        throw FatalError(dict.entry("type").tokens().front().where,
+                         "unknown density formulation '" + name + "'; valid density formulation names are:\n    continuity\n    summation");
+    return it->second;
+}
+
+template <int D>
+void requireFields(const ParticleSet<D>& set, const std::filesystem::path& file, const std::vector<std::string>& scalars,
+                   const std::vector<std::string>& vectors, const std::vector<std::string>& integers) {
+    const auto missing = [&](const std::string& field) {
+        throw FatalError("error: particle file '" + file.string() + "' lacks the field '" + field + "' (regenerate it with generateParticles)");
+    };
+    for (const auto& f : scalars)
+        if (!set.hasScalar(f)) missing(f);
+    for (const auto& f : vectors)
+        if (!set.hasVector(f)) missing(f);
+    for (const auto& f : integers)
+        if (!set.hasInteger(f)) missing(f);
+}
+
+}  // namespace
+
+template <int D>
+CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start) {
+    CaseSetup<D> setup;
+    Dictionary schemes = readCaseDictionary(caseDirectory, "system/sphSchemes");
+    Dictionary timeIntegration = readCaseDictionary(caseDirectory, "system/timeIntegration");
+    Dictionary fluidDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
+    Dictionary boundaryDict = readCaseDictionary(caseDirectory, "constant/boundaryProperties");
+
+    // Particle state.
+    const auto fluidFile = start.path / "fluid.vtu";
+    const auto wallFile = start.path / "walls.vtu";
+    StateHeader wallHeader;
+    ParticleSet<D> fluid = readParticleFile<D>(fluidFile, "fluid", setup.header);
+    ParticleSet<D> walls = readParticleFile<D>(wallFile, "walls", wallHeader);
+    requireFields(fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
+    requireFields(walls, wallFile, {"mass", "area"}, {"normal"}, {"patch"});
+    if (fluid.size() == 0)
+        throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
+    const double dx = setup.header.spacing;
+    if (!(dx > 0.0)) throw FatalError(fmt::format("error: '{}': particle spacing must be positive, found {:g}", fluidFile.string(), dx));
+    Vec<D> domainMin, domainMax;
+    for (int d = 0; d < D; ++d) {
+        domainMin[d] = setup.header.domainMin[static_cast<std::size_t>(d)];
+        domainMax[d] = setup.header.domainMax[static_cast<std::size_t>(d)];
+    }
+    for (std::size_t i = 0; i < fluid.size(); ++i)
+        if ((fluid.position[i].array() < domainMin.array()).any() || (fluid.position[i].array() > domainMax.array()).any())
+            throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({}) lies outside the domain [({}), ({})]", fluidFile.string(),
+                                         fluid.globalId[i], fmt::join(fluid.position[i], " "), fmt::join(domainMin, " "), fmt::join(domainMax, " ")));
+
+    // Fluid properties and schemes.
+    const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
+    setup.rho0 = properties.rho0;
+    fmt::print("Selecting equationOfState {}\n", describe(properties.eos));
+    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({}), gravityRampTime {:g}\n", properties.rho0, properties.nu, fmt::join(properties.gravity, " "),
+               properties.gravityRampTime);
+
+    const Dictionary& kernelDict = schemes.subDict("kernel");
+    const double hdx = kernelDict.getPositive("hdx");
+    if (hdx < 1.0) kernelDict.fail("hdx", fmt::format("h = hdx dx must not be smaller than the particle spacing; found hdx {:g} (valid: >= 1)", hdx));
+    const double h = hdx * dx;
+    Kernel<D> kernel = selectByType(makeKernelRegistry<D>(), kernelDict, h);
+    fmt::print("Selecting kernel {}: hdx {:g}, dx {:g}, h {:g}, support radius {:g}\n", kernelDict.get<std::string>("type"), hdx, dx, h,
+               std::visit([](const auto& k) { return k.supportRadius(); }, kernel));
+
+    const ModelContext context{h, properties.c0, properties.rho0, properties.nu,
+                               std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
+                               std::visit([](const auto& e) { return e.exponent(); }, properties.eos)};
+    const Dictionary& densityDict = schemes.subDict("density");
+    const DensityFormulation density = selectDensity(densityDict);
+    fmt::print("Selecting density {}\n", densityDict.get<std::string>("type"));
+    const Dictionary& viscosityDict = schemes.subDict("viscosity");
+    Viscosity viscosity = selectByType(makeViscosityRegistry(), viscosityDict, viscosityDict, context);
+    fmt::print("Selecting viscosity {}\n", describe(viscosity));
+    const Dictionary& diffusionDict = schemes.subDict("densityDiffusion");
+    DensityDiffusion<D> diffusion = selectByType(makeDensityDiffusionRegistry<D>(), diffusionDict, diffusionDict, context);
+    if (density == DensityFormulation::Summation && !std::holds_alternative<NoDensityDiffusion>(diffusion))
+        diffusionDict.fail("type", "density diffusion acts on the continuity equation; with summation density select 'none'");
+    fmt::print("Selecting densityDiffusion {}\n", describe<D>(diffusion));
+
+    // Boundary patches: one model per patch named in the wall state.
+    setup.patchNames = wallHeader.patchNames;
+    const auto& patchOfWall = walls.integer("patch");
+    for (int p : patchOfWall)
+        if (p < 0 || static_cast<std::size_t>(p) >= setup.patchNames.size())
+            throw FatalError(fmt::format("error: '{}': wall patch index {} has no name in patchNames", wallFile.string(), p));
+    for (const std::string& keyword : boundaryDict.keywords()) {
+        if (keyword == "FoamFile") continue;
+        if (std::find(setup.patchNames.begin(), setup.patchNames.end(), keyword) == setup.patchNames.end())
+            throw FatalError(boundaryDict.entry(keyword).where(),
+                             fmt::format("patch '{}' in constant/boundaryProperties is not a wall patch of the case; its patches are: {}", keyword,
+                                         setup.patchNames.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(setup.patchNames, ", "))));
+    }
+    std::vector<std::uint32_t> byPatch(walls.size());
+    for (std::uint32_t i = 0; i < byPatch.size(); ++i) byPatch[i] = i;
+    std::stable_sort(byPatch.begin(), byPatch.end(), [&](std::uint32_t a, std::uint32_t b) { return patchOfWall[a] < patchOfWall[b]; });
+    walls.permute(byPatch);
+    std::vector<Patch<D>> patches;
+    const auto boundaryRegistry = makeBoundaryModelRegistry<D>();
+    for (std::size_t p = 0; p < setup.patchNames.size(); ++p) {
+        const auto& sortedPatch = walls.integer("patch");
+        Patch<D> patch;
+        patch.name = setup.patchNames[p];
+        patch.begin = static_cast<std::size_t>(std::lower_bound(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)) - sortedPatch.begin());
+        patch.end = static_cast<std::size_t>(std::upper_bound(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)) - sortedPatch.begin());
+        const Dictionary& patchDict = boundaryDict.subDict(patch.name);
+        patch.model = selectByType(boundaryRegistry, patchDict, patchDict);
+        fmt::print("Selecting boundary model for patch {} ({} particles): {}\n", patch.name, patch.end - patch.begin, patch.model->describe());
+        patches.push_back(std::move(patch));
+    }
+
+    // Time integration.
+    const Dictionary& integratorDict = timeIntegration.subDict("integrator");
+    setup.integrator = selectByType(makeTimeIntegratorRegistry<D>(), integratorDict, integratorDict);
+    setup.courant = timeIntegration.getPositiveOrDefault("courant", 0.2);
+    setup.maxDeltaT = timeIntegration.getPositiveOrDefault("maxDeltaT", std::numeric_limits<double>::infinity());
+    setup.fixedDeltaT = timeIntegration.getPositiveOrDefault("fixedDeltaT", 0.0);
+    fmt::print("Selecting time integrator {}: courant {:g}{}{}\n", setup.integrator->describe(), setup.courant,
+               std::isfinite(setup.maxDeltaT) ? fmt::format(", maxDeltaT {:g}", setup.maxDeltaT) : "",
+               setup.fixedDeltaT > 0.0 ? fmt::format(", fixedDeltaT {:g}", setup.fixedDeltaT) : "");
+
+    FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density};
+    setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
+                                                    properties.gravity, properties.gravityRampTime);
+    setup.dictionaries.push_back(std::move(schemes));
+    setup.dictionaries.push_back(std::move(timeIntegration));
+    setup.dictionaries.push_back(std::move(fluidDict));
+    setup.dictionaries.push_back(std::move(boundaryDict));
+    return setup;
+}
+
+#ifdef SPHKIT_HAS_1D
+template CaseSetup<1> setUpCase<1>(const std::filesystem::path&, const TimeDirectory&);
+#endif
+#ifdef SPHKIT_HAS_2D
+template CaseSetup<2> setUpCase<2>(const std::filesystem::path&, const TimeDirectory&);
+#endif
+#ifdef SPHKIT_HAS_3D
+template CaseSetup<3> setUpCase<3>(const std::filesystem::path&, const TimeDirectory&);
+#endif
+
+}  // namespace sph

@@ -1,0 +1,184 @@
+#include "driver/Simulation.hpp"
+
+#include "driver/CaseDirectory.hpp"
+#include "driver/FluidSetup.hpp"
+#include "driver/Progress.hpp"
+#include "functionObjects/FunctionObject.hpp"
+#include "io/ParticleFile.hpp"
+#include "io/PvdCollection.hpp"
+#include "io/SelectByType.hpp"
+#include "io/TimeName.hpp"
+#include "physics/FluidSystem.hpp"
+#include "timeIntegrators/TimeIntegrator.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace sph {
+
+namespace {
+
+// Reordering the fluid by cell costs a pass over every field; particles move little per step.
+constexpr long stepsBetweenCellSorts = 10;
+
+template <int D>
+struct FunctionObjectEntry {
+    std::string name;
+    std::unique_ptr<FunctionObject<D>> object;
+    double interval;
+    double nextTime;
+};
+
+template <int D>
+std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& controlDict, const std::filesystem::path& caseDirectory,
+                                                        double startTime, double rho0) {
+    std::vector<FunctionObjectEntry<D>> entries;
+    const Dictionary* functions = controlDict.findSubDict("functions");
+    if (!functions) return entries;
+    const auto registry = makeFunctionObjectRegistry<D>();
+    for (const std::string& name : functions->keywords()) {
+        const Dictionary& dict = functions->subDict(name);
+        const FunctionObjectContext context{caseDirectory / "postProcessing" / name / timeName(startTime), rho0};
+        auto object = selectByType(registry, dict, dict, context);
+        const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
+        fmt::print("Selecting function object {} ({})\n", name, object->describe());
+        entries.push_back({name, std::move(object), interval, startTime});
+    }
+    return entries;
+}
+
+// A blown-up run stops with the step, time, particle and quantity.
+template <int D>
+void checkState(const FluidSystem<D>& system, long step, double t, double rho0) {
+    const auto& x = system.fluid.position;
+    const auto& v = system.fluid.vector("velocity");
+    const auto& rho = system.fluid.scalar("density");
+    const Vec<D>& lo = system.domainMin();
+    const Vec<D>& hi = system.domainMax();
+    const auto stop = [&](std::size_t i, const std::string& what) {
+        throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({}) {}.\n"
+                                     "    The last written time is kept; reduce the time step (courant) or check the case.",
+                                     step, t, system.fluid.globalId[i], fmt::join(x[i], " "), what));
+    };
+    for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) {
+        if (!x[i].allFinite()) stop(i, "has a non-finite position");
+        if (!v[i].allFinite()) stop(i, "has a non-finite velocity");
+        if (!std::isfinite(rho[i]) || rho[i] < 0.5 * rho0 || rho[i] > 2.0 * rho0)
+            stop(i, fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0));
+        if ((x[i].array() < lo.array()).any() || (x[i].array() > hi.array()).any())
+            stop(i, fmt::format("left the domain [({}), ({})]", fmt::join(lo, " "), fmt::join(hi, " ")));
+    }
+}
+
+template <int D>
+void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start) {
+    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+    FluidSystem<D>& system = *setup.system;
+
+    const double endTime = controlDict.get<double>("endTime");
+    const double writeInterval = controlDict.getPositive("writeInterval");
+    if (!(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
+    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, start.time, setup.rho0);
+    controlDict.checkUnused();
+    for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
+
+    PvdCollection pvd(caseDirectory / (std::filesystem::absolute(caseDirectory).lexically_normal().filename().string() + ".pvd"));
+    for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
+        if (written.time <= start.time) pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
+
+    StateHeader header = setup.header;
+    const auto write = [&](double t, long step) {
+        auto timer = system.timers.time(Stage::Output);
+        const std::string name = timeName(t);
+        std::filesystem::create_directories(caseDirectory / name);
+        header.time = t;
+        header.step = step;
+        StateHeader wallHeader = header;
+        wallHeader.patchNames = setup.patchNames;
+        writeParticleFile(caseDirectory / name / "fluid.vtu", system.fluid, header);
+        writeParticleFile(caseDirectory / name / "walls.vtu", system.walls, wallHeader);
+        pvd.add(t, {name + "/fluid.vtu", name + "/walls.vtu"});
+    };
+    const auto runFunctionObjects = [&](double t, bool force) {
+        auto timer = system.timers.time(Stage::FunctionObjects);
+        for (auto& entry : functionObjects) {
+            if (!force && t < entry.nextTime - 1e-12 * std::max(1.0, std::abs(t))) continue;
+            entry.object->execute(system, t);
+            entry.nextTime = t + entry.interval;
+        }
+    };
+
+    fmt::print("\nStarting time loop at t = {:g} (from {}), endTime {:g}, writeInterval {:g}\n\n", start.time, start.path.string(), endTime,
+               writeInterval);
+    double t = start.time;
+    long step = header.step;
+    system.evaluateRates(t);
+    runFunctionObjects(t, true);
+    Progress progress(t, endTime, system.fluid.size());
+    double nextWrite = start.time + writeInterval;
+    const long firstStep = step;
+    double dt = 0.0;
+    const double timeTolerance = 1e-9 * writeInterval;
+    while (t < endTime - timeTolerance) {
+        if ((step - firstStep) % stepsBetweenCellSorts == 0) system.sortFluidByCell();
+        dt = setup.fixedDeltaT > 0.0 ? setup.fixedDeltaT : std::min(system.stableTimeStep(setup.courant), setup.maxDeltaT);
+        // Land on write times and on endTime exactly.
+        const double target = std::min(nextWrite, endTime);
+        if (t + dt > target - timeTolerance) dt = target - t;
+        setup.integrator->step(system, t, dt);
+        t = (t + dt > target - timeTolerance) ? target : t + dt;
+        ++step;
+        checkState(system, step, t, setup.rho0);
+        runFunctionObjects(t, false);
+        if (t >= nextWrite - timeTolerance || t >= endTime - timeTolerance) {
+            write(t, step);
+            while (nextWrite <= t + timeTolerance) nextWrite += writeInterval;
+        }
+        progress.update(step, t, dt);
+    }
+    progress.finish();
+
+    const double wall = progress.elapsedSeconds();
+    const long steps = step - firstStep;
+    const double particleSteps = static_cast<double>(steps) * static_cast<double>(system.fluid.size());
+    fmt::print("\nEnd at t = {:g}: {} steps, {} right-hand-side evaluations, {} fluid + {} wall particles\n", t, steps,
+               setup.integrator->rateEvaluations(), system.fluid.size(), system.walls.size());
+    fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
+    fmt::print("Time per part:\n");
+    for (std::size_t s = 0; s < static_cast<std::size_t>(Stage::Count); ++s) {
+        const double seconds = system.timers.seconds(static_cast<Stage>(s));
+        fmt::print("    {:<20} {:8.3f} s  {:5.1f} %\n", stageNames[s], seconds, wall > 0.0 ? 100.0 * seconds / wall : 0.0);
+    }
+    for (const auto& entry : functionObjects) {
+        const std::string summary = entry.object->summary();
+        if (!summary.empty()) fmt::print("{}: {}\n", entry.name, summary);
+    }
+}
+
+}  // namespace
+
+void runCase(const std::filesystem::path& caseDirectory) {
+    if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
+    const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
+    controlDict.findEntry("application");  // informational, as in OpenFOAM
+    const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
+    const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
+    switch (dimension) {
+#ifdef SPHKIT_HAS_1D
+        case 1: return run<1>(caseDirectory, controlDict, start);
+#endif
+#ifdef SPHKIT_HAS_2D
+        case 2: return run<2>(caseDirectory, controlDict, start);
+#endif
+#ifdef SPHKIT_HAS_3D
+        case 3: return run<3>(caseDirectory, controlDict, start);
+#endif
+        default: break;
+    }
+    throw FatalError(fmt::format("error: '{}' is a {}D state, but this build compiled only the dimensions in SPHKIT_DIMENSIONS",
+                                 (start.path / "fluid.vtu").string(), dimension));
+}
+
+}  // namespace sph

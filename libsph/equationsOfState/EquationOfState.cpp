@@ -1,0 +1,36 @@
+#include "equationsOfState/EquationOfState.hpp"
+
+#include <fmt/format.h>
+
+namespace sph {
+
+EquationOfStateRegistry makeEquationOfStateRegistry() {
+    const CoefficientDoc p0{"backgroundPressure", "0", "p0 added to the pressure [Pa]"};
+    EquationOfStateRegistry registry("equationOfState");
+    registry.add("tait",
+                 {"p = B((rho/rho0)^gamma - 1) + p0, B = c0^2 rho0/gamma", "Monaghan, J. Comput. Phys. 110 (1994) 399",
+                  {{"gamma", "7", "exponent"}, p0}},
+                 [](const Dictionary& dict, double rho0, double c0) {
+                     return EquationOfState{TaitEquationOfState(rho0, c0, dict.getPositiveOrDefault("gamma", 7.0),
+                                                                dict.getOrDefault("backgroundPressure", 0.0))};
+                 });
+    registry.add("linear", {"p = c0^2 (rho - rho0) + p0", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", {p0}},
+                 [](const Dictionary& dict, double rho0, double c0) {
+                     return EquationOfState{LinearEquationOfState(rho0, c0, dict.getOrDefault("backgroundPressure", 0.0))};
+                 });
+    return registry;
+}
+
+std::string describe(const EquationOfState& eos) {
+    return std::visit(
+        [](const auto& e) {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, TaitEquationOfState>)
+                return fmt::format("tait: rho0 {:g}, c0 {:g}, gamma {:g}, B {:g}, backgroundPressure {:g}", e.rho0, e.c0, e.gamma, e.B, e.p0);
+            else
+                return fmt::format("linear: rho0 {:g}, c0 {:g}, backgroundPressure {:g}", e.rho0, e.c0, e.p0);
+        },
+        eos);
+}
+
+}  // namespace sph

@@ -1,0 +1,51 @@
+// lineSample: pressure and density along a line, interpolated from the fluid particles with
+// the Shepard-normalised kernel sum  f(x) = sum_j f_j W(x - x_j) V_j / sum_j W(x - x_j) V_j,
+// V_j = m_j/rho_j. Each execution writes postProcessing/<name>/<t0>/<time>/line.csv
+// (distance, position, p, rho[, p_ref]). With a hydrostaticReference it compares p with
+// rho0 |g| (H - z), z measured against gravity, and appends to error.dat the L2 and max
+// error over the samples, normalised by rho0 |g| H.
+// Example (system/controlDict, functions):
+//   pressure
+//   {
+//       type lineSample; start (1 0); end (1 0.9); points 46; executeInterval 0.1;
+//       hydrostaticReference { freeSurfaceHeight 0.9; }
+//   }
+#pragma once
+
+#include "core/Vector.hpp"
+#include "functionObjects/FunctionObject.hpp"
+
+#include <fstream>
+#include <optional>
+#include <vector>
+
+namespace sph {
+
+template <int D>
+class LineSample : public FunctionObject<D> {
+public:
+    LineSample(const Dictionary& dict, const FunctionObjectContext& context);
+    std::string describe() const override;
+    void execute(const FluidSystem<D>& system, double t) override;
+    std::string summary() const override;
+
+    struct Sample {
+        Vec<D> position;
+        double pressure, density;
+    };
+    // Interpolated values at the points (exposed for tests).
+    std::vector<Sample> sample(const FluidSystem<D>& system) const;
+
+    double lastL2Error() const { return l2_; }
+
+private:
+    Vec<D> start_, end_;
+    int points_;
+    std::optional<double> freeSurfaceHeight_;
+    double rho0_;
+    std::filesystem::path directory_;
+    std::ofstream errorOut_;
+    double l2_ = 0.0, max_ = 0.0, time_ = 0.0;
+};
+
+}  // namespace sph

@@ -1,0 +1,40 @@
+#include "functionObjects/SurgeFront.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+#include <limits>
+
+namespace sph {
+
+template <int D>
+SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext& context)
+    : origin_(dict.getVector<D>("origin")), direction_(dict.getVector<D>("direction")) {
+    if (!(direction_.norm() > 0.0)) dict.fail("direction", "must not be the zero vector");
+    direction_.normalize();
+    std::filesystem::create_directories(context.outputDirectory);
+    const auto file = context.outputDirectory / "surgeFront.dat";
+    out_.open(file);
+    if (!out_) throw FatalError("error: cannot write '" + file.string() + "'");
+    out_ << "# time front\n";
+}
+
+template <int D>
+std::string SurgeFront<D>::describe() const {
+    return fmt::format("surgeFront: origin {}, direction {}", fmt::join(origin_, " "), fmt::join(direction_, " "));
+}
+
+template <int D>
+void SurgeFront<D>::execute(const FluidSystem<D>& system, double t) {
+    double front = -std::numeric_limits<double>::infinity();
+    const auto& x = system.fluid.position;
+    for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) front = std::max(front, (x[i] - origin_).dot(direction_));
+    front_ = front;
+    out_ << fmt::format("{:.9g} {:.9g}\n", t, front) << std::flush;
+}
+
+template class SurgeFront<1>;
+template class SurgeFront<2>;
+template class SurgeFront<3>;
+
+}  // namespace sph

@@ -1,0 +1,557 @@
+#include "io/Dictionary.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace sph {
+
+namespace {
+
+constexpr int maxIncludeDepth = 32;
+
+bool isPunctuation(char c) { return c == '{' || c == '}' || c == '(' || c == ')' || c == ';' || c == '[' || c == ']'; }
+
+// Splits text into tokens; comments are dropped here.
+class Tokenizer {
+public:
+    Tokenizer(const std::string& text, std::shared_ptr<const std::string> file) : text_(text), file_(std::move(file)) {}
+
+    std::vector<Token> run() {
+        std::vector<Token> tokens;
+        while (skipBlanksAndComments()) tokens.push_back(next());
+        return tokens;
+    }
+
+private:
+    SourceLocation here() const { return {file_, line_, column_}; }
+
+    char peek(std::size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
+
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            column_ = 1;
+        } else {
+            ++column_;
+        }
+        ++pos_;
+    }
+
+    // Returns false at end of text.
+    bool skipBlanksAndComments() {
+        while (pos_ < text_.size()) {
+            const char c = peek();
+            if (std::isspace(static_cast<unsigned char>(c))) {
+                advance();
+            } else if (c == '/' && peek(1) == '/') {
+                while (pos_ < text_.size() && peek() != '\n') advance();
+            } else if (c == '/' && peek(1) == '*') {
+                const SourceLocation start = here();
+                advance();
+                advance();
+                while (pos_ < text_.size() && !(peek() == '*' && peek(1) == '/')) advance();
+                if (pos_ >= text_.size()) throw FatalError(start, "comment '/*' is never closed by '*/'");
+                advance();
+                advance();
+            } else {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    Token next() {
+        Token token;
+        token.where = here();
+        const char c = peek();
+        if (isPunctuation(c)) {
+            token.kind = Token::Kind::Punctuation;
+            token.text = std::string(1, c);
+            advance();
+            return token;
+        }
+        if (c == '"') {
+            token.kind = Token::Kind::String;
+            advance();
+            while (pos_ < text_.size() && peek() != '"' && peek() != '\n') {
+                if (peek() == '\\' && (peek(1) == '"' || peek(1) == '\\')) advance();
+                token.text += peek();
+                advance();
+            }
+            if (peek() != '"') throw FatalError(token.where, "string is not closed by '\"' on the same line");
+            advance();
+            return token;
+        }
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(peek())) && !isPunctuation(peek()) &&
+               peek() != '"' && !(peek() == '/' && (peek(1) == '/' || peek(1) == '*'))) {
+            token.text += peek();
+            advance();
+        }
+        token.kind = Token::Kind::Word;
+        const bool hasDigit = std::any_of(token.text.begin(), token.text.end(), [](char d) { return std::isdigit(static_cast<unsigned char>(d)); });
+        const char first = token.text.front();
+        if (hasDigit && (std::isdigit(static_cast<unsigned char>(first)) || first == '-' || first == '+' || first == '.')) {
+            char* end = nullptr;
+            const double value = std::strtod(token.text.c_str(), &end);
+            if (end == token.text.c_str() + token.text.size()) {
+                token.kind = Token::Kind::Number;
+                token.number = value;
+            }
+        }
+        return token;
+    }
+
+    const std::string& text_;
+    std::shared_ptr<const std::string> file_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int column_ = 1;
+};
+
+std::string readFile(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec))
+        throw FatalError("error: cannot open dictionary '" + file.string() + "': file not found");
+    if (std::filesystem::is_directory(file, ec))
+        throw FatalError("error: cannot open dictionary '" + file.string() + "': it is a directory");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw FatalError("error: cannot open dictionary '" + file.string() + "': permission denied or unreadable");
+    std::ostringstream contents;
+    contents << in.rdbuf();
+    return contents.str();
+}
+
+// Recursive-descent parser over the token list of one file.
+class Parser {
+public:
+    Parser(std::vector<Token> tokens, std::filesystem::path baseDirectory, int includeDepth,
+           std::vector<const Dictionary*> scopes)
+        : tokens_(std::move(tokens)), base_(std::move(baseDirectory)), depth_(includeDepth), scopes_(std::move(scopes)) {}
+
+    // Parses entries into `target` until end of input (topLevel) or a closing '}'.
+    void parseBody(Dictionary& target, bool topLevel) {
+        scopes_.push_back(&target);
+        while (pos_ < tokens_.size()) {
+            const Token& token = tokens_[pos_];
+            if (token.kind == Token::Kind::Punctuation) {
+                if (token.text == "}") {
+                    if (topLevel) throw FatalError(token.where, "'}' has no matching '{'");
+                    ++pos_;
+                    scopes_.pop_back();
+                    return;
+                }
+                if (token.text == ";") {  // stray ';' is harmless, as in OpenFOAM
+                    ++pos_;
+                    continue;
+                }
+                throw FatalError(token.where, "expected a keyword, found " + token.describe());
+            }
+            if (token.kind == Token::Kind::Number)
+                throw FatalError(token.where, "expected a keyword, found " + token.describe());
+            if (token.kind == Token::Kind::Word && token.text == "#include") {
+                parseInclude(target);
+                continue;
+            }
+            if (token.kind == Token::Kind::Word && token.text.starts_with("#"))
+                throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include)");
+            if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
+                // `$dict` inside a dictionary merges that dictionary's entries here.
+                const Entry& source = resolveMacro(token);
+                if (!source.isDictionary())
+                    throw FatalError(token.where, "'" + token.text + "' names a value, not a dictionary, so it cannot stand as an entry");
+                target.merge(source.dictionary());
+                ++pos_;
+                if (pos_ < tokens_.size() && tokens_[pos_].text == ";" && tokens_[pos_].kind == Token::Kind::Punctuation) ++pos_;
+                continue;
+            }
+            parseEntry(target);
+        }
+        if (!topLevel) {
+            throw FatalError(target.where(), "dictionary '" + target.name() + "' opened by '{' is never closed by '}'");
+        }
+        scopes_.pop_back();
+    }
+
+private:
+    void parseInclude(Dictionary& target) {
+        const Token& directive = tokens_[pos_++];
+        if (pos_ >= tokens_.size() || tokens_[pos_].kind != Token::Kind::String)
+            throw FatalError(directive.where, "#include must be followed by a file name in double quotes");
+        const Token& fileToken = tokens_[pos_++];
+        if (depth_ >= maxIncludeDepth)
+            throw FatalError(fileToken.where, "#include nested more than " + std::to_string(maxIncludeDepth) + " deep (an include cycle?)");
+        std::filesystem::path file = fileToken.text;
+        if (file.is_relative()) file = base_ / file;
+        std::string text;
+        try {
+            text = readFile(file);
+        } catch (const FatalError& e) {
+            throw FatalError(fileToken.where, std::string("#include \"") + fileToken.text + "\": " + e.what());
+        }
+        auto fileName = std::make_shared<const std::string>(file.lexically_normal().string());
+        Parser inner(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, scopes_);
+        inner.scopes_.pop_back();  // the included text parses straight into `target`
+        inner.parseBody(target, true);
+    }
+
+    const Entry& resolveMacro(const Token& token) const {
+        std::string path = token.text.substr(1);
+        if (path.starts_with("{") && path.ends_with("}")) path = path.substr(1, path.size() - 2);
+        if (path.empty()) throw FatalError(token.where, "'$' must be followed by the name of an entry");
+        std::vector<std::string> parts;
+        std::stringstream stream(path);
+        for (std::string part; std::getline(stream, part, '/');) parts.push_back(part);
+        for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) {
+            const Dictionary* dict = *scope;
+            const Entry* found = nullptr;
+            for (std::size_t i = 0; i < parts.size(); ++i) {
+                found = dict->findEntry(parts[i]);
+                if (!found) break;
+                if (i + 1 < parts.size()) {
+                    if (!found->isDictionary()) {
+                        found = nullptr;
+                        break;
+                    }
+                    dict = &found->dictionary();
+                }
+            }
+            if (found) return *found;
+        }
+        throw FatalError(token.where, "macro '" + token.text + "' refers to no entry defined before it in this or an enclosing dictionary");
+    }
+
+    void parseEntry(Dictionary& target) {
+        const Token& keyword = tokens_[pos_++];
+        const std::string childName = target.name().empty() ? keyword.text : target.name() + "/" + keyword.text;
+        if (pos_ < tokens_.size() && tokens_[pos_].kind == Token::Kind::Punctuation && tokens_[pos_].text == "{") {
+            auto child = std::make_shared<Dictionary>(childName, tokens_[pos_].where);
+            ++pos_;
+            parseBody(*child, false);
+            target.add(Entry(keyword.text, keyword.where, child));
+            return;
+        }
+        std::vector<Token> value;
+        std::vector<const Token*> open;  // unclosed '(' and '['
+        while (true) {
+            if (pos_ >= tokens_.size()) {
+                if (!open.empty()) throw FatalError(open.back()->where, "'" + open.back()->text + "' is never closed");
+                throw FatalError(keyword.where, "entry '" + keyword.text + "' is not terminated by ';' before the end of the file");
+            }
+            const Token& token = tokens_[pos_];
+            if (token.kind == Token::Kind::Punctuation) {
+                if (token.text == ";" && open.empty()) {
+                    ++pos_;
+                    break;
+                }
+                if (token.text == "(" || token.text == "[") open.push_back(&token);
+                if (token.text == ")" || token.text == "]") {
+                    const char expected = token.text == ")" ? '(' : '[';
+                    if (open.empty() || open.back()->text[0] != expected)
+                        throw FatalError(token.where, "'" + token.text + "' has no matching '" + std::string(1, expected) + "'");
+                    open.pop_back();
+                }
+                if (token.text == "{" || token.text == "}" || (token.text == ";" && !open.empty())) {
+                    if (!open.empty())
+                        throw FatalError(token.where, "found '" + token.text + "' inside the list opened at line " +
+                                                          std::to_string(open.back()->where.line) + "; is a ')' missing?");
+                    throw FatalError(token.where, "found '" + token.text + "' in the value of '" + keyword.text + "'; is a ';' missing after it?");
+                }
+            }
+            if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
+                const Entry& source = resolveMacro(token);
+                ++pos_;
+                if (source.isDictionary()) {
+                    if (!value.empty() || pos_ >= tokens_.size() || tokens_[pos_].text != ";")
+                        throw FatalError(token.where, "'" + token.text + "' names a dictionary and can only stand alone as a value");
+                    ++pos_;
+                    auto copy = std::make_shared<Dictionary>(childName, token.where);
+                    copy->merge(source.dictionary());
+                    target.add(Entry(keyword.text, keyword.where, copy));
+                    return;
+                }
+                value.insert(value.end(), source.tokens().begin(), source.tokens().end());
+                continue;
+            }
+            value.push_back(token);
+            ++pos_;
+        }
+        if (value.empty()) throw FatalError(keyword.where, "entry '" + keyword.text + "' has no value before ';'");
+        target.add(Entry(keyword.text, keyword.where, std::move(value)));
+    }
+
+    std::vector<Token> tokens_;
+    std::size_t pos_ = 0;
+    std::filesystem::path base_;
+    int depth_;
+    std::vector<const Dictionary*> scopes_;
+};
+
+std::string joinTokens(const std::vector<Token>& tokens) {
+    std::string text;
+    for (const Token& t : tokens) {
+        if (!text.empty()) text += ' ';
+        text += t.kind == Token::Kind::String ? "\"" + t.text + "\"" : t.text;
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string Token::describe() const {
+    switch (kind) {
+        case Kind::Number: return "number " + text;
+        case Kind::String: return "string \"" + text + "\"";
+        case Kind::Punctuation: return "'" + text + "'";
+        case Kind::Word: break;
+    }
+    return "word '" + text + "'";
+}
+
+Entry::Entry(std::string keyword, SourceLocation where, std::vector<Token> tokens)
+    : keyword_(std::move(keyword)), where_(std::move(where)), tokens_(std::move(tokens)) {}
+
+Entry::Entry(std::string keyword, SourceLocation where, std::shared_ptr<Dictionary> dictionary)
+    : keyword_(std::move(keyword)), where_(std::move(where)), dictionary_(std::move(dictionary)) {}
+
+Dictionary Dictionary::fromFile(const std::filesystem::path& file, const std::string& name) {
+    const std::string text = readFile(file);
+    auto fileName = std::make_shared<const std::string>(file.lexically_normal().string());
+    Dictionary dict(name.empty() ? file.filename().string() : name, SourceLocation{fileName, 0, 0});
+    Parser(Tokenizer(text, fileName).run(), file.parent_path(), 0, {}).parseBody(dict, true);
+    return dict;
+}
+
+Dictionary Dictionary::fromString(const std::string& text, const std::string& sourceName,
+                                  const std::filesystem::path& baseDirectory) {
+    auto fileName = std::make_shared<const std::string>(sourceName);
+    Dictionary dict(sourceName, SourceLocation{fileName, 0, 0});
+    Parser(Tokenizer(text, fileName).run(), baseDirectory, 0, {}).parseBody(dict, true);
+    return dict;
+}
+
+void Dictionary::add(Entry entry) {
+    // A repeated keyword replaces the earlier one, as in OpenFOAM.
+    for (Entry& existing : entries_) {
+        if (existing.keyword() == entry.keyword()) {
+            existing = std::move(entry);
+            return;
+        }
+    }
+    entries_.push_back(std::move(entry));
+}
+
+void Dictionary::merge(const Dictionary& other) {
+    for (const Entry& e : other.entries_) {
+        if (e.isDictionary()) {
+            auto copy = std::make_shared<Dictionary>(name_ + "/" + e.keyword(), e.dictionary().where());
+            copy->merge(e.dictionary());
+            add(Entry(e.keyword(), e.where(), copy));
+        } else {
+            add(Entry(e.keyword(), e.where(), e.tokens()));
+        }
+    }
+}
+
+Entry* Dictionary::lookup(const std::string& keyword) const {
+    for (Entry& e : entries_)
+        if (e.keyword() == keyword) return &e;
+    return nullptr;
+}
+
+bool Dictionary::found(const std::string& keyword) const { return lookup(keyword) != nullptr; }
+
+std::vector<std::string> Dictionary::keywords() const {
+    std::vector<std::string> names;
+    for (const Entry& e : entries_) names.push_back(e.keyword());
+    return names;
+}
+
+const Entry* Dictionary::findEntry(const std::string& keyword) const {
+    Entry* e = lookup(keyword);
+    if (e) e->used = true;
+    return e;
+}
+
+const Entry& Dictionary::entry(const std::string& keyword) const {
+    const Entry* e = findEntry(keyword);
+    if (!e) {
+        std::string message = "keyword '" + keyword + "' is missing from dictionary '" + name_ + "'";
+        SourceLocation at = where_;
+        throw FatalError(at, message);
+    }
+    return *e;
+}
+
+const Dictionary* Dictionary::findSubDict(const std::string& keyword) const {
+    const Entry* e = findEntry(keyword);
+    if (!e) return nullptr;
+    if (!e->isDictionary())
+        throw FatalError(e->where(), "'" + keyword + "' in dictionary '" + name_ + "' must be a dictionary { ... }, found the value '" +
+                                         joinTokens(e->tokens()) + "'");
+    return &e->dictionary();
+}
+
+const Dictionary& Dictionary::subDict(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    if (!e.isDictionary())
+        throw FatalError(e.where(), "'" + keyword + "' in dictionary '" + name_ + "' must be a dictionary { ... }, found the value '" +
+                                        joinTokens(e.tokens()) + "'");
+    return e.dictionary();
+}
+
+namespace {
+
+const Token& singleToken(const Entry& e, const std::string& dictName, const std::string& expected) {
+    if (e.isDictionary())
+        throw FatalError(e.where(), "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected + ", found a dictionary");
+    if (e.tokens().size() != 1)
+        throw FatalError(e.tokens()[1].where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
+                                                  ", found '" + joinTokens(e.tokens()) + "'");
+    return e.tokens().front();
+}
+
+// Flattens `(a b c)` into its items, checking the brackets.
+std::vector<Token> listItems(const Entry& e, const std::string& dictName, const std::string& expected) {
+    if (e.isDictionary())
+        throw FatalError(e.where(), "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected + ", found a dictionary");
+    const auto& t = e.tokens();
+    // OpenFOAM allows a size prefix: `3(1 2 3)`.
+    std::size_t first = (t.size() >= 2 && t[0].kind == Token::Kind::Number && t[1].text == "(") ? 1 : 0;
+    if (t.size() < first + 2 || t[first].text != "(" || t.back().text != ")" || t[first].kind != Token::Kind::Punctuation)
+        throw FatalError(t.front().where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
+                                              " in parentheses, found '" + joinTokens(t) + "'");
+    std::vector<Token> items(t.begin() + static_cast<long>(first) + 1, t.end() - 1);
+    for (const Token& item : items)
+        if (item.kind == Token::Kind::Punctuation)
+            throw FatalError(item.where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
+                                             ", found nested '" + item.text + "'");
+    if (first == 1 && static_cast<std::size_t>(t[0].number) != items.size())
+        throw FatalError(t[0].where, "keyword '" + e.keyword() + "': list size " + t[0].text + " does not match its " +
+                                         std::to_string(items.size()) + " items");
+    return items;
+}
+
+double numberOf(const Token& t, const std::string& keyword, const std::string& dictName) {
+    if (t.kind != Token::Kind::Number)
+        throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + dictName + "': expected a number, found " + t.describe());
+    return t.number;
+}
+
+}  // namespace
+
+template <>
+double Dictionary::get<double>(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    return numberOf(singleToken(e, name_, "a number"), keyword, name_);
+}
+
+template <>
+int Dictionary::get<int>(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    const Token& t = singleToken(e, name_, "an integer");
+    const double value = numberOf(t, keyword, name_);
+    if (value != static_cast<double>(static_cast<long long>(value)) || value > 2147483647.0 || value < -2147483648.0)
+        throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected an integer, found " + t.describe());
+    return static_cast<int>(value);
+}
+
+template <>
+bool Dictionary::get<bool>(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    const Token& t = singleToken(e, name_, "a switch (yes/no, true/false, on/off)");
+    if (t.text == "yes" || t.text == "true" || t.text == "on") return true;
+    if (t.text == "no" || t.text == "false" || t.text == "off") return false;
+    throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected a switch (yes/no, true/false, on/off), found " +
+                                  t.describe());
+}
+
+template <>
+std::string Dictionary::get<std::string>(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    const Token& t = singleToken(e, name_, "a word");
+    if (t.kind != Token::Kind::Word && t.kind != Token::Kind::String)
+        throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected a word, found " + t.describe());
+    return t.text;
+}
+
+template <>
+std::vector<double> Dictionary::get<std::vector<double>>(const std::string& keyword) const {
+    std::vector<double> values;
+    for (const Token& t : listItems(entry(keyword), name_, "a list of numbers")) values.push_back(numberOf(t, keyword, name_));
+    return values;
+}
+
+template <>
+std::vector<std::string> Dictionary::get<std::vector<std::string>>(const std::string& keyword) const {
+    std::vector<std::string> values;
+    for (const Token& t : listItems(entry(keyword), name_, "a list of words")) {
+        if (t.kind == Token::Kind::Number)
+            throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected a list of words, found " + t.describe());
+        values.push_back(t.text);
+    }
+    return values;
+}
+
+template <int D>
+Vec<D> Dictionary::getVector(const std::string& keyword) const {
+    const std::vector<double> values = get<std::vector<double>>(keyword);
+    if (values.size() != static_cast<std::size_t>(D))
+        fail(keyword, "expected a vector of " + std::to_string(D) + " components for a " + std::to_string(D) + "D case, found " +
+                          std::to_string(values.size()));
+    Vec<D> v;
+    for (int i = 0; i < D; ++i) v[i] = values[static_cast<std::size_t>(i)];
+    return v;
+}
+template Vec<1> Dictionary::getVector<1>(const std::string&) const;
+template Vec<2> Dictionary::getVector<2>(const std::string&) const;
+template Vec<3> Dictionary::getVector<3>(const std::string&) const;
+
+void Dictionary::fail(const std::string& keyword, const std::string& message) const {
+    const Entry* e = lookup(keyword);
+    throw FatalError(e ? e->where() : where_, "keyword '" + keyword + "' in dictionary '" + name_ + "': " + message);
+}
+
+double Dictionary::getPositive(const std::string& keyword) const {
+    const double value = get<double>(keyword);
+    if (!(value > 0.0)) fail(keyword, "must be greater than zero, found " + entry(keyword).tokens().front().text);
+    return value;
+}
+
+double Dictionary::getNonNegative(const std::string& keyword) const {
+    const double value = get<double>(keyword);
+    if (!(value >= 0.0)) fail(keyword, "must not be negative, found " + entry(keyword).tokens().front().text);
+    return value;
+}
+
+double Dictionary::getPositiveOrDefault(const std::string& keyword, double fallback) const {
+    return found(keyword) ? getPositive(keyword) : fallback;
+}
+
+double Dictionary::getNonNegativeOrDefault(const std::string& keyword, double fallback) const {
+    return found(keyword) ? getNonNegative(keyword) : fallback;
+}
+
+void Dictionary::collectUnused(std::vector<std::string>& out) const {
+    for (const Entry& e : entries_) {
+        if (e.keyword() == "FoamFile") continue;  // file header, informational only
+        if (!e.used) {
+            out.push_back(e.where().str() + ": '" + e.keyword() + "' in dictionary '" + name_ + "'");
+        } else if (e.isDictionary()) {
+            e.dictionary().collectUnused(out);
+        }
+    }
+}
+
+void Dictionary::checkUnused() const {
+    std::vector<std::string> unused;
+    collectUnused(unused);
+    if (unused.empty()) return;
+    std::string message = "error: keyword(s) not recognised by the selected models (misspelt, or not used by this selection):";
+    for (const std::string& u : unused) message += "\n    " + u;
+    throw FatalError(message);
+}
+
+}  // namespace sph

@@ -1,0 +1,37 @@
+// Particle state files: VTK XML unstructured grids (.vtu, appended binary, zlib-compressed),
+// one vertex cell per particle, so ParaView opens them as they are and the solver restarts
+// from them exactly (every field is Float64). Point data: one array per written field,
+// 3-component arrays for vectors (zero-padded below 3D), "id" for global ids. Field data:
+// TimeValue, step, dimension, spacing, domainMin, domainMax and, for walls, patchNames.
+// Files are written to a temporary name in the same directory and renamed, so a reader never
+// sees a half-written file.
+#pragma once
+
+#include "core/ParticleSet.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+struct StateHeader {
+    int dimension = 0;
+    double time = 0.0;
+    long step = 0;
+    double spacing = 0.0;
+    std::vector<double> domainMin, domainMax;
+    std::vector<std::string> patchNames;
+};
+
+template <int D>
+void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header);
+
+// Reads a particle file; FatalError naming the file for a missing, unreadable or incomplete one.
+template <int D>
+ParticleSet<D> readParticleFile(const std::filesystem::path& file, const std::string& setName, StateHeader& header);
+
+// The header alone (to pick the dimension before reading).
+StateHeader readParticleFileHeader(const std::filesystem::path& file);
+
+}  // namespace sph

@@ -1,0 +1,25 @@
+// The kernel family: every kernel a case can select, as one variant the hot loops are
+// instantiated over (std::visit once per stage, never per pair).
+#pragma once
+
+#include "core/Registry.hpp"
+#include "kernels/CubicSplineMonaghanLattanzio1985.hpp"
+#include "kernels/QuinticSplineMorris1997.hpp"
+#include "kernels/WendlandC2.hpp"
+#include "kernels/WendlandC4.hpp"
+
+#include <variant>
+
+namespace sph {
+
+template <int D>
+using Kernel = std::variant<CubicSplineMonaghanLattanzio1985<D>, QuinticSplineMorris1997<D>, WendlandC2<D>, WendlandC4<D>>;
+
+// Factory argument: the smoothing length h.
+template <int D>
+using KernelRegistry = Registry<Kernel<D>, double>;
+
+template <int D>
+KernelRegistry<D> makeKernelRegistry();
+
+}  // namespace sph

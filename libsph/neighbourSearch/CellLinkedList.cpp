@@ -1,0 +1,49 @@
+#include "neighbourSearch/CellLinkedList.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace sph {
+
+template <int D>
+CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double cellSize)
+    : lower_(lower), cellSize_(cellSize), inverseCellSize_(1.0 / cellSize) {
+    std::size_t cells = 1;
+    for (int d = 0; d < D; ++d) {
+        const double extent = upper[d] - lower[d];
+        if (!(extent > 0.0)) throw std::invalid_argument("cell-linked list: empty domain");
+        const int n = std::max(1, static_cast<int>(std::ceil(extent / cellSize)));
+        dims_[static_cast<std::size_t>(d)] = n;
+        cells *= static_cast<std::size_t>(n);
+    }
+    cellStart_.assign(cells + 1, 0);
+}
+
+template <int D>
+void CellLinkedList<D>::build(const std::vector<Vec<D>>& points) {
+    points_ = &points;
+    const std::size_t n = points.size();
+    std::vector<std::uint32_t> cellOf(n);
+    std::fill(cellStart_.begin(), cellStart_.end(), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        cellOf[i] = static_cast<std::uint32_t>(cellIndex(points[i]));
+        ++cellStart_[cellOf[i] + 1];
+    }
+    for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+    sorted_.resize(n);
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) sorted_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+template <int D>
+std::vector<std::uint32_t> CellLinkedList<D>::cellOrder(const std::vector<Vec<D>>& points) const {
+    CellLinkedList<D> copy(*this);
+    copy.build(points);
+    return copy.sorted_;
+}
+
+template class CellLinkedList<1>;
+template class CellLinkedList<2>;
+template class CellLinkedList<3>;
+
+}  // namespace sph

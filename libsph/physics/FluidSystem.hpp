@@ -1,0 +1,96 @@
+// The particles of a case and the models selected for them, and the right-hand side every
+// integrator calls: from positions, velocities and densities to accelerations and density rates.
+//
+// One evaluation runs these stages; a stage with nothing selected costs nothing:
+//   1. neighbours   cell-linked list of the fluid (walls are indexed once, they do not move yet)
+//   2. density      summation density (if selected), then pressure from the equation of state
+//   3. boundary     each patch's model sets its wall particles' pressure, density, velocity
+//   4. forces       pressure gradient, viscosity, gravity, continuity rate and density diffusion
+//                   over fluid-fluid and fluid-wall pairs, in one loop templated on the kernel,
+//                   viscosity, density diffusion and density formulation (one std::visit)
+#pragma once
+
+#include "boundaryModels/BoundaryModel.hpp"
+#include "core/ParticleSet.hpp"
+#include "core/StageTimers.hpp"
+#include "densityDiffusion/DensityDiffusion.hpp"
+#include "equationsOfState/EquationOfState.hpp"
+#include "kernels/Kernel.hpp"
+#include "neighbourSearch/CellLinkedList.hpp"
+#include "viscosity/Viscosity.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+enum class DensityFormulation { Summation, Continuity };
+
+template <int D>
+struct Patch {
+    std::string name;
+    std::size_t begin = 0, end = 0;  // range in the wall particle set
+    std::unique_ptr<BoundaryModel<D>> model;
+};
+
+template <int D>
+struct FluidModels {
+    Kernel<D> kernel;
+    EquationOfState eos;
+    Viscosity viscosity;
+    DensityDiffusion<D> diffusion;
+    DensityFormulation density = DensityFormulation::Continuity;
+};
+
+template <int D>
+class FluidSystem {
+public:
+    // Takes the particle sets as read from the state files: the fluid set must hold velocity,
+    // density and mass; the wall set position, normal, area, mass and patch, sorted by patch.
+    FluidSystem(FluidModels<D> models, ParticleSet<D> fluid, ParticleSet<D> walls, std::vector<Patch<D>> patches,
+                const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime);
+
+    // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
+    void evaluateRates(double t);
+
+    // Reorders the fluid by cell for memory locality; call between steps only.
+    void sortFluidByCell();
+
+    // Largest stable step: CFL on h/(c0 + max|v|) and sqrt(h/max|a|), and 0.125 h^2/nu.
+    double stableTimeStep(double courant) const;
+
+    Vec<D> gravityAt(double t) const;
+    double smoothingLength() const;
+    double supportRadius() const { return supportRadius_; }
+    bool continuity() const { return models_.density == DensityFormulation::Continuity; }
+    bool wallDensityEvolves() const { return wallDensityEvolves_; }
+    const FluidModels<D>& models() const { return models_; }
+    const Vec<D>& domainMin() const { return domainMin_; }
+    const Vec<D>& domainMax() const { return domainMax_; }
+
+    ParticleSet<D> fluid;
+    ParticleSet<D> walls;
+    std::vector<Patch<D>> patches;
+    StageTimers timers;
+
+    const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
+    const CellLinkedList<D>& wallCells() const { return wallCells_; }
+
+private:
+    void computeSummationDensity();
+    void computeFluidPressure();
+    void computeForces(const Vec<D>& gravity);
+
+    FluidModels<D> models_;
+    Vec<D> domainMin_, domainMax_;
+    Vec<D> gravity_;
+    double gravityRampTime_;
+    double supportRadius_;
+    bool wallDensityEvolves_ = false;
+    CellLinkedList<D> fluidCells_;
+    CellLinkedList<D> wallCells_;
+};
+
+}  // namespace sph

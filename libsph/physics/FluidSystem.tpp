@@ -1,0 +1,187 @@
+// Implementation of FluidSystem<D>, included once per dimension by FluidSystem<D>.cpp so the
+// hot loops of each dimension compile in parallel.
+#include "physics/FluidSystem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sph {
+
+template <int D>
+FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
+                            const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime)
+    : fluid(std::move(fluidSet)), walls(std::move(wallSet)), patches(std::move(patchList)), models_(std::move(models)),
+      domainMin_(domainMin), domainMax_(domainMax), gravity_(gravity), gravityRampTime_(gravityRampTime),
+      supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
+      fluidCells_(domainMin, domainMax, supportRadius_), wallCells_(domainMin, domainMax, supportRadius_) {
+    fluid.addScalar("pressure", 0.0);
+    fluid.addVector("acceleration", Vec<D>::Zero(), false);
+    if (continuity()) fluid.addScalar("densityRate", 0.0, false);
+    walls.addScalar("pressure", 0.0);
+    walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
+    walls.addVector("velocity", Vec<D>::Zero(), false);
+    if (std::visit([](const auto& v) { return v.enabled; }, models_.viscosity)) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
+    for (const Patch<D>& patch : patches) wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
+    if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0, false);
+    wallCells_.build(walls.position);
+}
+
+template <int D>
+double FluidSystem<D>::smoothingLength() const {
+    return std::visit([](const auto& k) { return k.h; }, models_.kernel);
+}
+
+template <int D>
+Vec<D> FluidSystem<D>::gravityAt(double t) const {
+    // Smooth ramp from 0 over gravityRampTime (Adami et al. 2012 hydrostatic test, as in PySPH).
+    if (t >= gravityRampTime_) return gravity_;
+    return gravity_ * (0.5 * (std::sin((t / gravityRampTime_ - 0.5) * std::numbers::pi) + 1.0));
+}
+
+template <int D>
+void FluidSystem<D>::sortFluidByCell() {
+    auto timer = timers.time(Stage::Neighbours);
+    fluid.permute(fluidCells_.cellOrder(fluid.position));
+}
+
+template <int D>
+void FluidSystem<D>::evaluateRates(double t) {
+    {
+        auto timer = timers.time(Stage::Neighbours);
+        fluidCells_.build(fluid.position);
+    }
+    {
+        auto timer = timers.time(Stage::Density);
+        if (!continuity()) computeSummationDensity();
+        computeFluidPressure();
+    }
+    {
+        auto timer = timers.time(Stage::Boundary);
+        for (Patch<D>& patch : patches) patch.model->updateWalls(*this, patch.begin, patch.end, t);
+    }
+    auto timer = timers.time(Stage::Forces);
+    computeForces(gravityAt(t));
+}
+
+template <int D>
+void FluidSystem<D>::computeSummationDensity() {
+    std::visit(
+        [this](const auto& kernel) {
+            const std::size_t n = fluid.ownedCount();
+            const Vec<D>* x = fluid.position.data();
+            const double* mass = fluid.scalar("mass").data();
+            const double* wallMass = walls.scalar("mass").data();
+            double* rho = fluid.scalar("density").data();
+            const double radius = supportRadius_;
+#pragma omp parallel for schedule(static)
+            for (std::size_t i = 0; i < n; ++i) {
+                double sum = 0.0;
+                fluidCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
+                wallCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += wallMass[j] * kernel.value(std::sqrt(r2)); });
+                rho[i] = sum;
+            }
+        },
+        models_.kernel);
+}
+
+template <int D>
+void FluidSystem<D>::computeFluidPressure() {
+    std::visit(
+        [this](const auto& eos) {
+            const std::size_t n = fluid.ownedCount();
+            const double* rho = fluid.scalar("density").data();
+            double* p = fluid.scalar("pressure").data();
+#pragma omp parallel for schedule(static)
+            for (std::size_t i = 0; i < n; ++i) p[i] = eos.pressure(rho[i]);
+        },
+        models_.eos);
+}
+
+namespace {
+
+// The hot loop: one instantiation per kernel x viscosity x diffusion x density formulation.
+// Disabled terms are compile-time constants and vanish.
+template <int D, bool Continuity, class Kernel, class Viscosity, class Diffusion>
+void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscosity, const Diffusion& diffusion, const Vec<D>& gravity) {
+    const std::size_t n = s.fluid.ownedCount();
+    const Vec<D>* x = s.fluid.position.data();
+    const Vec<D>* v = s.fluid.vector("velocity").data();
+    const double* m = s.fluid.scalar("mass").data();
+    const double* rho = s.fluid.scalar("density").data();
+    const double* p = s.fluid.scalar("pressure").data();
+    Vec<D>* a = s.fluid.vector("acceleration").data();
+    double* drho = Continuity ? s.fluid.scalar("densityRate").data() : nullptr;
+    const Vec<D>* vWall = s.walls.vector("velocity").data();
+    const Vec<D>* vWallViscous = Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr;
+    const double* mWall = s.walls.scalar("mass").data();
+    const double* rhoWall = s.walls.scalar("density").data();
+    const double* pWall = s.walls.scalar("pressure").data();
+    const double radius = s.supportRadius();
+    const auto& fluidCells = s.fluidCells();
+    const auto& wallCells = s.wallCells();
+
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+        Vec<D> acceleration = gravity;
+        double densityRate = 0.0;
+        const double pOverRho2 = p[i] / (rho[i] * rho[i]);
+        fluidCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+            if (j == i) return;
+            const double F = kernel.gradientFactor(std::sqrt(r2));
+            acceleration -= (m[j] * (pOverRho2 + p[j] / (rho[j] * rho[j])) * F) * r;
+            const Vec<D> vij = v[i] - v[j];
+            if constexpr (Continuity) densityRate += m[j] * F * vij.dot(r);
+            if constexpr (Viscosity::enabled) acceleration += viscosity.acceleration(r, vij, r2, rho[i], rho[j], m[j], F);
+            if constexpr (Diffusion::enabled) densityRate += diffusion.rate(r, r2, rho[i], rho[j], m[j], F);
+        });
+        wallCells.forEachNeighbour(x[i], radius, [&](std::uint32_t k, const Vec<D>& r, double r2) {
+            const double F = kernel.gradientFactor(std::sqrt(r2));
+            acceleration -= (mWall[k] * (pOverRho2 + pWall[k] / (rhoWall[k] * rhoWall[k])) * F) * r;
+            if constexpr (Continuity) densityRate += mWall[k] * F * (v[i] - vWall[k]).dot(r);
+            if constexpr (Viscosity::enabled)
+                acceleration += viscosity.acceleration(r, Vec<D>(v[i] - vWallViscous[k]), r2, rho[i], rhoWall[k], mWall[k], F);
+        });
+        a[i] = acceleration;
+        if constexpr (Continuity) drho[i] = densityRate;
+    }
+}
+
+}  // namespace
+
+template <int D>
+void FluidSystem<D>::computeForces(const Vec<D>& gravity) {
+    if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->gravity = gravity;
+    std::visit(
+        [&](const auto& kernel, const auto& viscosity, const auto& diffusion) {
+            using Diffusion = std::decay_t<decltype(diffusion)>;
+            if (continuity()) {
+                fluidRates<D, true>(*this, kernel, viscosity, diffusion, gravity);
+            } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
+                fluidRates<D, false>(*this, kernel, viscosity, diffusion, gravity);
+            }
+        },
+        models_.kernel, models_.viscosity, models_.diffusion);
+}
+
+template <int D>
+double FluidSystem<D>::stableTimeStep(double courant) const {
+    const std::size_t n = fluid.ownedCount();
+    const Vec<D>* v = fluid.vector("velocity").data();
+    const Vec<D>* a = fluid.vector("acceleration").data();
+    double maxSpeed2 = 0.0, maxAcceleration2 = 0.0;
+#pragma omp parallel for reduction(max : maxSpeed2, maxAcceleration2) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+        maxSpeed2 = std::max(maxSpeed2, v[i].squaredNorm());
+        maxAcceleration2 = std::max(maxAcceleration2, a[i].squaredNorm());
+    }
+    const double h = smoothingLength();
+    const double c0 = std::visit([](const auto& e) { return e.c0; }, models_.eos);
+    double dt = courant * h / (c0 + std::sqrt(maxSpeed2));
+    if (maxAcceleration2 > 0.0) dt = std::min(dt, courant * std::sqrt(h / std::sqrt(maxAcceleration2)));
+    const double nu = viscousTimeStepNu(models_.viscosity);
+    if (nu > 0.0) dt = std::min(dt, 0.125 * h * h / nu);
+    return dt;
+}
+
+}  // namespace sph

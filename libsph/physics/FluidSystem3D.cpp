@@ -1,0 +1,3 @@
+#include "physics/FluidSystem.tpp"
+
+template class sph::FluidSystem<3>;

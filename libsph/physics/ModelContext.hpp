@@ -1,0 +1,15 @@
+// What a per-pair model needs to know of the case when it is built.
+#pragma once
+
+namespace sph {
+
+struct ModelContext {
+    double h;          // smoothing length
+    double c0;         // reference speed of sound
+    double rho0;       // reference density
+    double nu;         // kinematic viscosity (0 when the fluid properties give none)
+    double stiffness;  // K of the equation of state p - p0 = K ((rho/rho0)^n - 1)
+    double exponent;   // n of the same
+};
+
+}  // namespace sph

@@ -1,0 +1,61 @@
+// wcsph: the weakly compressible SPH solver. Runs the case directory given by -case (default:
+// the current directory) from its start time to endTime.
+#include "driver/ModelCatalogue.hpp"
+#include "driver/Simulation.hpp"
+#include "core/FatalError.hpp"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <exception>
+#include <string>
+
+namespace {
+
+constexpr const char* usage = R"(Usage: wcsph [OPTIONS]
+
+Weakly compressible SPH solver: runs an OpenFOAM-style case directory from its start time
+(system/controlDict startFrom) to endTime, writing <time>/fluid.vtu, <time>/walls.vtu and a
+<case>.pvd collection that ParaView opens.
+
+Options:
+  -case <dir>     case directory (default: the current directory)
+  -listModels     list every selectable model with its coefficients, defaults and reference
+  -help           print this message
+
+Before the first run, generateParticles writes the initial state 0/ from
+system/generateParticlesDict. See doc/userGuide.md.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string caseDirectory = ".";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "-help" || arg == "--help" || arg == "-h") {
+            fmt::print("{}", usage);
+            return 0;
+        }
+        if (arg == "-listModels") {
+            fmt::print("{}", sph::modelCatalogue());
+            return 0;
+        }
+        if (arg == "-case" && i + 1 < argc) {
+            caseDirectory = argv[++i];
+            continue;
+        }
+        fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
+        return 2;
+    }
+    try {
+        sph::runCase(caseDirectory);
+    } catch (const sph::FatalError& e) {
+        fmt::print(stderr, "\n{}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "\nerror: internal error: {}\n", e.what());
+        return 3;
+    }
+    return 0;
+}
