@@ -55,7 +55,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     ParticleSet<D> fluid = readParticleFile<D>(fluidFile, "fluid", setup.header);
     ParticleSet<D> walls = readParticleFile<D>(wallFile, "walls", wallHeader);
     requireFields(fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
-    requireFields(walls, wallFile, {"mass", "area"}, {"normal"}, {"patch"});
+    requireFields(walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
     if (fluid.size() == 0)
         throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
     const double dx = setup.header.spacing;

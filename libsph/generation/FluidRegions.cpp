@@ -1,0 +1,135 @@
+#include "generation/FluidRegions.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace sph {
+
+int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx) {
+    const double cells = (hi - lo) / dx;
+    const double whole = std::round(cells);
+    if (!(whole >= 1.0) || std::abs(cells - whole) > 1e-6 * std::max(1.0, whole))
+        dict.fail(keyword, fmt::format("the extent {:g} (from {:g} to {:g}) must be a positive whole number of spacings dx = {:g} (it is {:g} dx)",
+                                       hi - lo, lo, hi, dx, cells));
+    return static_cast<int>(whole);
+}
+
+namespace {
+
+template <int D>
+void forEachLatticePoint(const Vec<D>& origin, const std::array<int, D>& counts, double dx, const std::function<void(const Vec<D>&)>& visit) {
+    std::array<int, D> index{};
+    while (true) {
+        Vec<D> x;
+        for (int d = 0; d < D; ++d) x[d] = origin[d] + (index[static_cast<std::size_t>(d)] + 0.5) * dx;
+        visit(x);
+        int d = 0;
+        for (; d < D; ++d) {
+            if (++index[static_cast<std::size_t>(d)] < counts[static_cast<std::size_t>(d)]) break;
+            index[static_cast<std::size_t>(d)] = 0;
+        }
+        if (d == D) return;
+    }
+}
+
+template <int D>
+std::vector<Vec<D>> fillBox(const Dictionary& region, double dx) {
+    const Vec<D> lo = region.getVector<D>("min"), hi = region.getVector<D>("max");
+    std::array<int, D> counts;
+    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(region, "max", lo[d], hi[d], dx);
+    std::vector<Vec<D>> points;
+    forEachLatticePoint<D>(lo, counts, dx, [&](const Vec<D>& x) { points.push_back(x); });
+    return points;
+}
+
+// Lattice points of the whole domain for which `inside` holds.
+template <int D>
+std::vector<Vec<D>> fillShape(double dx, const Vec<D>& domainMin, const Vec<D>& domainMax, const std::function<bool(const Vec<D>&)>& inside) {
+    std::array<int, D> counts;
+    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = static_cast<int>(std::floor((domainMax[d] - domainMin[d]) / dx));
+    std::vector<Vec<D>> points;
+    forEachLatticePoint<D>(domainMin, counts, dx, [&](const Vec<D>& x) {
+        if (inside(x)) points.push_back(x);
+    });
+    return points;
+}
+
+Vec<2> semiAxesOf(const Dictionary& region) {
+    if (region.found("radius")) {
+        const double r = region.getPositive("radius");
+        return Vec<2>(r, r);
+    }
+    const Vec<2> axes = region.getVector<2>("semiAxes");
+    if (!(axes.minCoeff() > 0.0)) region.fail("semiAxes", "both semi-axes must be greater than zero");
+    return axes;
+}
+
+bool insidePolygon(const std::vector<Vec<2>>& polygon, const Vec<2>& x) {
+    bool inside = false;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Vec<2>& a = polygon[i];
+        const Vec<2>& b = polygon[j];
+        if ((a.y() > x.y()) != (b.y() > x.y()) && x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) inside = !inside;
+    }
+    return inside;
+}
+
+}  // namespace
+
+std::vector<Vec<2>> readPointList(const Dictionary& dict, const std::string& keyword) {
+    const Entry& entry = dict.entry(keyword);
+    std::vector<Vec<2>> points;
+    const auto& t = entry.tokens();
+    // ((x y) (x y) ...)
+    std::size_t k = 0;
+    const auto bad = [&]() { dict.fail(keyword, "expected a list of 2D points ((x y) (x y) ...)"); };
+    if (entry.isDictionary() || t.size() < 2 || t[k].text != "(") bad();
+    ++k;
+    while (k < t.size() && t[k].text == "(") {
+        if (k + 3 >= t.size() || t[k + 1].kind != Token::Kind::Number || t[k + 2].kind != Token::Kind::Number || t[k + 3].text != ")") bad();
+        points.emplace_back(t[k + 1].number, t[k + 2].number);
+        k += 4;
+    }
+    if (k + 1 != t.size() || t[k].text != ")") bad();
+    return points;
+}
+
+
+template <int D>
+FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax) {
+    const std::string type = region.get<std::string>("type");
+    FluidRegionParticles<D> result;
+    result.velocity = region.found("velocity") ? region.getVector<D>("velocity") : Vec<D>::Zero();
+    if (type == "box") {
+        result.positions = fillBox<D>(region, dx);
+        return result;
+    }
+    if constexpr (D == 2) {
+        if (type == "ellipse" || type == "circle") {
+            const Vec<2> centre = region.getVector<2>("centre");
+            const Vec<2> axes = semiAxesOf(region);
+            result.positions = fillShape<2>(dx, domainMin, domainMax, [&](const Vec<2>& x) {
+                return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
+            });
+            return result;
+        }
+        if (type == "polygon") {
+            const std::vector<Vec<2>> polygon = readPointList(region, "points");
+            if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
+            result.positions = fillShape<2>(dx, domainMin, domainMax, [&](const Vec<2>& x) { return insidePolygon(polygon, x); });
+            return result;
+        }
+    }
+    const std::string valid = D == 2 ? "box, circle, ellipse, polygon" : "box";
+    throw FatalError(region.entry("type").tokens().front().where,
+                     fmt::format("unknown fluid region type '{}' for a {}D case; valid types are: {}", type, D, valid));
+}
+
+template FluidRegionParticles<1> fillFluidRegion<1>(const Dictionary&, double, const Vec<1>&, const Vec<1>&);
+template FluidRegionParticles<2> fillFluidRegion<2>(const Dictionary&, double, const Vec<2>&, const Vec<2>&);
+template FluidRegionParticles<3> fillFluidRegion<3>(const Dictionary&, double, const Vec<3>&, const Vec<3>&);
+
+}  // namespace sph

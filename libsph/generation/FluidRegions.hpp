@@ -1,0 +1,35 @@
+// Fluid regions of system/generateParticlesDict, filled with particles on a square lattice of
+// spacing dx (cell-centred: the first particle is dx/2 inside the region's edge).
+//   fluid
+//   {
+//       column { type box; min (0 0); max (0.4 0.8); velocity (0 0); }   // 1D, 2D, 3D
+//       drop   { type ellipse; centre (0 0); semiAxes (1 1); }          // 2D (circle: radius 1;)
+//       wedge  { type polygon; points ((0 0) (1 0) (0 1)); }           // 2D
+//   }
+// A box's extent must be a whole number of spacings; other shapes keep the lattice points
+// (anchored at the domain's min corner) that fall inside them.
+#pragma once
+
+#include "core/Vector.hpp"
+#include "io/Dictionary.hpp"
+
+#include <vector>
+
+namespace sph {
+
+template <int D>
+struct FluidRegionParticles {
+    std::vector<Vec<D>> positions;
+    Vec<D> velocity;
+};
+
+template <int D>
+FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax);
+
+// Number of whole spacings in [lo, hi]; FatalError naming the keyword when it is not whole.
+int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
+
+// A list of 2D points `((x y) (x y) ...)`.
+std::vector<Vec<2>> readPointList(const Dictionary& dict, const std::string& keyword);
+
+}  // namespace sph

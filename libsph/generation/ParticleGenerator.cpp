@@ -1,0 +1,155 @@
+#include "generation/ParticleGenerator.hpp"
+
+#include "driver/CaseDirectory.hpp"
+#include "generation/FluidRegions.hpp"
+#include "generation/WallPatches.hpp"
+#include "io/ParticleFile.hpp"
+#include "neighbourSearch/CellLinkedList.hpp"
+#include "physics/FluidProperties.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sph {
+
+namespace {
+
+template <int D>
+bool insideDomain(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
+    return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+}
+
+template <int D>
+GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory) {
+    const double dx = dict.getPositive("spacing");
+    const Dictionary& domain = dict.subDict("domain");
+    const Vec<D> lo = domain.getVector<D>("min"), hi = domain.getVector<D>("max");
+    for (int d = 0; d < D; ++d)
+        if (!(hi[d] > lo[d])) domain.fail("max", fmt::format("must exceed min in every direction (direction {}: {:g} <= {:g})", d, hi[d], lo[d]));
+    const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
+    if (initialPressure != "none" && initialPressure != "hydrostatic")
+        dict.fail("initialPressure", "expected none or hydrostatic, found '" + initialPressure + "'");
+
+    const Dictionary fluidPropertiesDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
+    const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
+    const double rho0 = properties.rho0;
+    const double volume = std::pow(dx, D);
+
+    // Walls first: fluid particles overlapping them are dropped.
+    ParticleSet<D> walls("walls");
+    std::vector<std::string> patchNames;
+    const Dictionary* boundaries = dict.findSubDict("boundaries");
+    WallPatchParticles<D> allWalls;
+    std::vector<int> patchOf;
+    if (boundaries) {
+        for (const std::string& name : boundaries->keywords()) {
+            const Dictionary& patch = boundaries->subDict(name);
+            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx);
+            for (std::size_t k = 0; k < generated.positions.size(); ++k) {
+                if (!insideDomain<D>(generated.positions[k], lo, hi))
+                    throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({}) outside the domain [({}), ({})]", name,
+                                                                fmt::join(generated.positions[k], " "), fmt::join(lo, " "), fmt::join(hi, " ")));
+                allWalls.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k]);
+                patchOf.push_back(static_cast<int>(patchNames.size()));
+            }
+            patchNames.push_back(name);
+        }
+    }
+    CellLinkedList<D> wallCells(lo, hi, dx);
+    wallCells.build(allWalls.positions);
+
+    // Fluid regions.
+    std::vector<Vec<D>> fluidPositions, fluidVelocities;
+    std::vector<double> surfaceHeight;  // per particle: the top of its region along -g
+    const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
+    std::size_t dropped = 0;
+    const Dictionary& fluid = dict.subDict("fluid");
+    for (const std::string& name : fluid.keywords()) {
+        const Dictionary& region = fluid.subDict(name);
+        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, dx, lo, hi);
+        double top = -std::numeric_limits<double>::infinity();
+        std::size_t first = fluidPositions.size();
+        for (const Vec<D>& x : filled.positions) {
+            if (!insideDomain<D>(x, lo, hi))
+                throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({}) outside the domain [({}), ({})]", name,
+                                                             fmt::join(x, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
+            bool overlapsWall = false;
+            wallCells.forEachNeighbour(x, 0.5 * dx * (1.0 - 1e-9), [&](std::uint32_t, const Vec<D>&, double) { overlapsWall = true; });
+            if (overlapsWall) {
+                ++dropped;
+                continue;
+            }
+            fluidPositions.push_back(x);
+            fluidVelocities.push_back(filled.velocity);
+            top = std::max(top, x.dot(up) + 0.5 * dx);
+        }
+        surfaceHeight.resize(fluidPositions.size(), top);
+        if (fluidPositions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
+    }
+
+    const auto densityAt = [&](const Vec<D>& x, double top) {
+        if (initialPressure != "hydrostatic") return rho0;
+        return std::visit([&](const auto& eos) { return eos.density(eos.p0 + rho0 * properties.gravity.norm() * (top - x.dot(up))); }, properties.eos);
+    };
+
+    ParticleSet<D> fluidSet("fluid");
+    fluidSet.resize(fluidPositions.size());
+    auto& velocity = fluidSet.addVector("velocity", Vec<D>::Zero());
+    auto& density = fluidSet.addScalar("density", rho0);
+    fluidSet.addScalar("mass", rho0 * volume);
+    for (std::size_t i = 0; i < fluidPositions.size(); ++i) {
+        fluidSet.position[i] = fluidPositions[i];
+        fluidSet.globalId[i] = static_cast<std::int64_t>(i);
+        velocity[i] = fluidVelocities[i];
+        density[i] = densityAt(fluidPositions[i], surfaceHeight[i]);
+    }
+
+    walls.resize(allWalls.positions.size());
+    auto& normal = walls.addVector("normal", Vec<D>::Zero());
+    auto& spacing = walls.addScalar("spacing", dx);
+    auto& wallDensity = walls.addScalar("density", rho0);
+    walls.addScalar("mass", rho0 * volume);
+    auto& patch = walls.addInteger("patch", 0);
+    auto& layer = walls.addInteger("layer", 0);
+    const double highestSurface = surfaceHeight.empty() ? 0.0 : *std::max_element(surfaceHeight.begin(), surfaceHeight.end());
+    for (std::size_t k = 0; k < allWalls.positions.size(); ++k) {
+        walls.position[k] = allWalls.positions[k];
+        walls.globalId[k] = static_cast<std::int64_t>(k);
+        normal[k] = allWalls.normals[k];
+        spacing[k] = allWalls.spacings[k];
+        patch[k] = patchOf[k];
+        layer[k] = allWalls.layers[k];
+        wallDensity[k] = std::max(rho0, densityAt(allWalls.positions[k], highestSurface));
+    }
+
+    StateHeader header;
+    header.dimension = D;
+    header.spacing = dx;
+    header.domainMin.assign(lo.data(), lo.data() + D);
+    header.domainMax.assign(hi.data(), hi.data() + D);
+    dict.checkUnused();
+    std::filesystem::create_directories(outputDirectory);
+    writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
+    header.patchNames = patchNames;
+    writeParticleFile(outputDirectory / "walls.vtu", walls, header);
+    return {D, fluidSet.size(), walls.size(), dropped};
+}
+
+}  // namespace
+
+GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite) {
+    const Dictionary dict = readCaseDictionary(caseDirectory, "system/generateParticlesDict");
+    const std::filesystem::path output = caseDirectory / "0";
+    if (!overwrite && std::filesystem::exists(output / "fluid.vtu"))
+        throw FatalError("error: '" + (output / "fluid.vtu").string() + "' exists; remove it (./Allclean) or pass -overwrite");
+    const int dimension = dict.get<int>("dimension");
+    switch (dimension) {
+        case 1: return generate<1>(caseDirectory, dict, output);
+        case 2: return generate<2>(caseDirectory, dict, output);
+        case 3: return generate<3>(caseDirectory, dict, output);
+        default: dict.fail("dimension", fmt::format("must be 1, 2 or 3, found {}", dimension));
+    }
+}
+
+}  // namespace sph

@@ -1,0 +1,28 @@
+// generateParticles: builds the initial state 0/fluid.vtu and 0/walls.vtu from
+// system/generateParticlesDict (and rho0, gravity and the equation of state from
+// constant/fluidProperties):
+//   dimension  2;
+//   spacing    0.01;                              // dx
+//   domain     { min (-0.1 -0.1); max (1.7 1.0); } // every particle must lie inside
+//   initialPressure hydrostatic;                  // or none (default): p = rho0 |g| (H - z),
+//                                                 // H the top of each fluid region
+//   fluid      { <name> { type box; ... } ... }    // see FluidRegions.hpp
+//   boundaries { <patch> { type boxWalls; ... } ... }  // see WallPatches.hpp
+// Fluid particles closer than dx/2 to a wall particle are dropped. Mass is rho0 dx^D.
+#pragma once
+
+#include <filesystem>
+
+namespace sph {
+
+struct GenerationSummary {
+    int dimension;
+    std::size_t fluidParticles;
+    std::size_t wallParticles;
+    std::size_t droppedFluidParticles;
+};
+
+// Writes <case>/0/; refuses to replace an existing 0/fluid.vtu unless `overwrite`.
+GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite);
+
+}  // namespace sph

@@ -1,0 +1,148 @@
+#include "generation/WallPatches.hpp"
+
+#include "generation/FluidRegions.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sph {
+
+namespace {
+
+constexpr const char* faceNames[3][2] = {{"xMin", "xMax"}, {"yMin", "yMax"}, {"zMin", "zMax"}};
+
+template <int D>
+WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers) {
+    const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
+    std::array<int, D> counts;
+    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(patch, "max", lo[d], hi[d], dx);
+    std::array<std::array<bool, 2>, D> open{};
+    if (patch.found("open")) {
+        for (const std::string& face : patch.get<std::vector<std::string>>("open")) {
+            bool known = false;
+            for (int d = 0; d < D; ++d)
+                for (int side = 0; side < 2; ++side)
+                    if (face == faceNames[d][side]) open[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)] = known = true;
+            if (!known) {
+                std::string valid;
+                for (int d = 0; d < D; ++d) valid += fmt::format(" {} {}", faceNames[d][0], faceNames[d][1]);
+                patch.fail("open", fmt::format("unknown face '{}'; valid faces are:{}", face, valid));
+            }
+        }
+    }
+    WallPatchParticles<D> walls;
+    std::array<int, D> index;
+    for (int d = 0; d < D; ++d) index[static_cast<std::size_t>(d)] = -layers;
+    while (true) {
+        int depth = 0;
+        bool skip = false;
+        Vec<D> x, nearest;
+        for (int d = 0; d < D; ++d) {
+            const auto dd = static_cast<std::size_t>(d);
+            const int i = index[dd];
+            x[d] = lo[d] + (i + 0.5) * dx;
+            nearest[d] = std::clamp(x[d], lo[d], hi[d]);
+            if (i < 0) {
+                depth = std::max(depth, -i);
+                skip = skip || open[dd][0];
+            } else if (i >= counts[dd]) {
+                depth = std::max(depth, i - counts[dd] + 1);
+                skip = skip || open[dd][1];
+            }
+        }
+        if (depth > 0 && !skip) walls.add(x, (nearest - x).normalized(), dx, depth - 1);
+        int d = 0;
+        for (; d < D; ++d) {
+            const auto dd = static_cast<std::size_t>(d);
+            if (++index[dd] < counts[dd] + layers) break;
+            index[dd] = -layers;
+        }
+        if (d == D) break;
+    }
+    return walls;
+}
+
+WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
+    const std::vector<Vec<2>> points = readPointList(patch, "points");
+    if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
+    const std::string side = patch.getOrDefault<std::string>("side", "left");
+    if (side != "left" && side != "right") patch.fail("side", "expected left or right, found '" + side + "'");
+    const double sign = side == "left" ? 1.0 : -1.0;
+    WallPatchParticles<2> walls;
+    for (std::size_t s = 0; s + 1 < points.size(); ++s) {
+        const Vec<2> along = points[s + 1] - points[s];
+        const double length = along.norm();
+        if (!(length > 0.0)) patch.fail("points", fmt::format("points {} and {} coincide", s, s + 1));
+        const Vec<2> tangent = along / length;
+        const Vec<2> normal = sign * Vec<2>(-tangent.y(), tangent.x());
+        const int n = std::max(1, static_cast<int>(std::lround(length / dx)));
+        for (int layer = 0; layer < layers; ++layer)
+            for (int k = 0; k < n; ++k)
+                walls.add(points[s] + along * ((k + 0.5) / n) - (layer + offset) * dx * normal, normal, length / n, layer);
+    }
+    return walls;
+}
+
+WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, double offset) {
+    const Vec<2> centre = patch.getVector<2>("centre");
+    Vec<2> axes;
+    if (patch.found("radius")) {
+        axes.setConstant(patch.getPositive("radius"));
+    } else {
+        axes = patch.getVector<2>("semiAxes");
+        if (!(axes.minCoeff() > 0.0)) patch.fail("semiAxes", "both semi-axes must be greater than zero");
+    }
+    const bool fluidInside = patch.get<bool>("fluidInside");
+    // Arc length along the ellipse from a fine polygon, then particles at equal arc steps.
+    constexpr int fine = 20000;
+    std::vector<double> arc(fine + 1, 0.0);
+    const auto point = [&](double theta) { return Vec<2>(axes.x() * std::cos(theta), axes.y() * std::sin(theta)); };
+    for (int k = 1; k <= fine; ++k) arc[k] = arc[k - 1] + (point(2 * std::numbers::pi * k / fine) - point(2 * std::numbers::pi * (k - 1) / fine)).norm();
+    const double perimeter = arc.back();
+    WallPatchParticles<2> walls;
+    for (int layer = 0; layer < layers; ++layer) {
+        const double distance = (layer + offset) * dx;
+        // Each layer keeps about dx between neighbours: its perimeter grows or shrinks with the offset.
+        const double layerPerimeter = perimeter + (fluidInside ? 1.0 : -1.0) * 2.0 * std::numbers::pi * distance;
+        const int n = std::max(3, static_cast<int>(std::lround(layerPerimeter / dx)));
+        for (int k = 0; k < n; ++k) {
+            const double target = (k + 0.5) * perimeter / n;
+            const auto it = std::lower_bound(arc.begin(), arc.end(), target);
+            const long m = std::clamp<long>(it - arc.begin(), 1, fine);
+            const double fraction = (target - arc[m - 1]) / (arc[m] - arc[m - 1]);
+            const double theta = 2 * std::numbers::pi * (m - 1 + fraction) / fine;
+            const Vec<2> onCurve = point(theta);
+            const Vec<2> outward = Vec<2>(onCurve.x() / (axes.x() * axes.x()), onCurve.y() / (axes.y() * axes.y())).normalized();
+            const Vec<2> intoFluid = fluidInside ? Vec<2>(-outward) : outward;
+            walls.add(centre + onCurve - distance * intoFluid, intoFluid, layerPerimeter / n, layer);
+        }
+    }
+    return walls;
+}
+
+}  // namespace
+
+template <int D>
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
+    const std::string type = patch.get<std::string>("type");
+    const int layers = patch.get<int>("layers");
+    if (layers < 1) patch.fail("layers", fmt::format("must be at least 1, found {}", layers));
+    if (type == "boxWalls") return boxWalls<D>(patch, dx, layers);
+    if constexpr (D == 2) {
+        const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
+        if (type == "polyline") return polyline(patch, dx, layers, offset);
+        if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
+    }
+    const std::string valid = D == 2 ? "boxWalls, circle, ellipse, polyline" : "boxWalls";
+    throw FatalError(patch.entry("type").tokens().front().where,
+                     fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
+}
+
+template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double);
+template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double);
+template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double);
+
+}  // namespace sph

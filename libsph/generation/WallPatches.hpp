@@ -1,0 +1,42 @@
+// Wall patches of system/generateParticlesDict: surfaces of wall particles, each particle with
+// a unit normal pointing into the fluid, its spacing along the wall, and its layer (0 nearest
+// the fluid). Layer k lies (k + firstLayerOffset) dx behind the wall surface; the default
+// offset 1/2 puts the surface halfway between fluid and wall particles (Adami et al. 2012).
+//   boundaries
+//   {
+//       tank     { type boxWalls; min (0 0); max (1.6 0.8); layers 3; open (yMax); }  // 1D-3D
+//       ramp     { type polyline; points ((0 0) (1 0.5)); layers 3; side left; }     // 2D
+//       cylinder { type circle; centre (0.5 0.5); radius 0.1; layers 3; fluidInside no; }  // 2D
+//       bowl     { type ellipse; centre (0 0); semiAxes (2 1); layers 3; fluidInside yes; } // 2D
+//   }
+// boxWalls fills the shell around the box with the lattice continued outwards, corners
+// included; the normal points to the nearest point of the box (diagonal in corners).
+// polyline's normal is on the `side` (left or right) of the direction of travel.
+#pragma once
+
+#include "core/Vector.hpp"
+#include "io/Dictionary.hpp"
+
+#include <vector>
+
+namespace sph {
+
+template <int D>
+struct WallPatchParticles {
+    std::vector<Vec<D>> positions;
+    std::vector<Vec<D>> normals;
+    std::vector<double> spacings;
+    std::vector<int> layers;
+
+    void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer) {
+        positions.push_back(x);
+        normals.push_back(n);
+        spacings.push_back(spacing);
+        layers.push_back(layer);
+    }
+};
+
+template <int D>
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx);
+
+}  // namespace sph
