@@ -1,0 +1,52 @@
+#include "core/Registry.hpp"
+#include "kernels/Kernel.hpp"
+
+#include <gtest/gtest.h>
+
+using sph::FatalError;
+using sph::Registry;
+using sph::SourceLocation;
+
+namespace {
+
+SourceLocation at(int line, int column) { return {std::make_shared<const std::string>("system/sphSchemes"), line, column}; }
+
+}  // namespace
+
+TEST(Registry, CreatesTheNamedModel) {
+    Registry<int, int> registry("number");
+    registry.add("double", {"twice", "", {}}, [](int x) { return 2 * x; });
+    registry.add("square", {"squared", "", {}}, [](int x) { return x * x; });
+    EXPECT_EQ(registry.create("double", at(1, 1), 7), 14);
+    EXPECT_EQ(registry.create("square", at(1, 1), 7), 49);
+    EXPECT_EQ(registry.names(), (std::vector<std::string>{"double", "square"}));
+}
+
+TEST(Registry, UnknownNameListsTheSortedValidNamesWithItsLocation) {
+    const auto kernels = sph::makeKernelRegistry<2>();
+    try {
+        kernels.create("gaussian", at(3, 17), 1.0);
+        FAIL() << "no error for an unknown kernel";
+    } catch (const FatalError& e) {
+        EXPECT_STREQ(e.what(),
+                     "system/sphSchemes:3:17: error: unknown kernel 'gaussian'; valid kernel names are:\n"
+                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4");
+    }
+}
+
+TEST(Registry, DuplicateRegistrationIsAnError) {
+    Registry<int> registry("viscosity");
+    registry.add("artificial", {}, [] { return 1; });
+    EXPECT_THROW(registry.add("artificial", {}, [] { return 2; }), FatalError);
+    try {
+        registry.add("artificial", {}, [] { return 2; });
+    } catch (const FatalError& e) {
+        EXPECT_STREQ(e.what(), "error: viscosity 'artificial' is registered twice");
+    }
+}
+
+TEST(Registry, SelectedKernelHasTheRequestedSmoothingLength) {
+    const auto kernel = sph::makeKernelRegistry<3>().create("wendlandC4", at(1, 1), 0.25);
+    ASSERT_TRUE(std::holds_alternative<sph::WendlandC4<3>>(kernel));
+    EXPECT_DOUBLE_EQ(std::get<sph::WendlandC4<3>>(kernel).h, 0.25);
+}

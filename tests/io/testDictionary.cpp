@@ -1,0 +1,132 @@
+#include "io/Dictionary.hpp"
+#include "support/CaseFixture.hpp"
+
+#include <gtest/gtest.h>
+
+using sph::Dictionary;
+using sph::FatalError;
+
+namespace {
+
+// The message of the FatalError that `f` throws ("" if none).
+template <class F>
+std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const FatalError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+Dictionary parse(const std::string& text) { return Dictionary::fromString(text, "testDict"); }
+
+}  // namespace
+
+TEST(Dictionary, ReadsScalarsWordsSwitchesAndScientificNumbers) {
+    const Dictionary d = parse("a 1.5; b -2e-3; c 3E+2; n 42; w tait; s \"a string\"; on yes; off false;");
+    EXPECT_DOUBLE_EQ(d.get<double>("a"), 1.5);
+    EXPECT_DOUBLE_EQ(d.get<double>("b"), -2e-3);
+    EXPECT_DOUBLE_EQ(d.get<double>("c"), 300.0);
+    EXPECT_EQ(d.get<int>("n"), 42);
+    EXPECT_EQ(d.get<std::string>("w"), "tait");
+    EXPECT_EQ(d.get<std::string>("s"), "a string");
+    EXPECT_TRUE(d.get<bool>("on"));
+    EXPECT_FALSE(d.get<bool>("off"));
+}
+
+TEST(Dictionary, ReadsNestedDictionariesListsAndVectors) {
+    const Dictionary d = parse("outer { inner { x 1; } list (1 2 3); } words (a b); sized 2(4 5); v (0 -9.81);");
+    EXPECT_DOUBLE_EQ(d.subDict("outer").subDict("inner").get<double>("x"), 1.0);
+    EXPECT_EQ(d.subDict("outer").get<std::vector<double>>("list"), (std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(d.get<std::vector<std::string>>("words"), (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(d.get<std::vector<double>>("sized"), (std::vector<double>{4, 5}));
+    EXPECT_DOUBLE_EQ((d.getVector<2>("v")[1]), -9.81);
+    EXPECT_EQ(d.subDict("outer").subDict("inner").name(), "testDict/outer/inner");
+}
+
+TEST(Dictionary, SkipsLineAndBlockComments) {
+    const Dictionary d = parse("// line\na 1; /* block\n spanning { lines } */ b 2; // trailing\nc/*inline*/3;");
+    EXPECT_DOUBLE_EQ(d.get<double>("a"), 1.0);
+    EXPECT_DOUBLE_EQ(d.get<double>("b"), 2.0);
+    EXPECT_DOUBLE_EQ(d.get<double>("c"), 3.0);
+}
+
+TEST(Dictionary, SubstitutesMacrosFromThisAndEnclosingScopes) {
+    const Dictionary d = parse("H 0.6; g (0 -9.81); defaults { gamma 7; }\n"
+                               "inner { depth $H; gravity $g; eos { $defaults type tait; } copy $defaults; }\n"
+                               "path $defaults/gamma;");
+    const Dictionary& inner = d.subDict("inner");
+    EXPECT_DOUBLE_EQ(inner.get<double>("depth"), 0.6);
+    EXPECT_EQ(inner.get<std::vector<double>>("gravity"), (std::vector<double>{0, -9.81}));
+    EXPECT_DOUBLE_EQ(inner.subDict("eos").get<double>("gamma"), 7.0);
+    EXPECT_DOUBLE_EQ(inner.subDict("copy").get<double>("gamma"), 7.0);
+    EXPECT_DOUBLE_EQ(d.get<double>("path"), 7.0);
+}
+
+TEST(Dictionary, IncludesFilesRelativeToTheIncludingFile) {
+    const auto dir = sph::test::freshDirectory();
+    sph::test::writeFile(dir / "common" / "values", "rho0 1000; c0 $base;");
+    sph::test::writeFile(dir / "main", "base 20;\n#include \"common/values\"\nc0 25; // later entries override\n");
+    const Dictionary d = Dictionary::fromFile(dir / "main");
+    EXPECT_DOUBLE_EQ(d.get<double>("rho0"), 1000.0);
+    EXPECT_DOUBLE_EQ(d.get<double>("c0"), 25.0);
+}
+
+TEST(Dictionary, ErrorsNameFileLineAndColumn) {
+    EXPECT_EQ(errorOf([] { parse("a 1;\nb 2"); }), "testDict:2:1: error: entry 'b' is not terminated by ';' before the end of the file");
+    EXPECT_EQ(errorOf([] { parse("a 1;\n  }"); }), "testDict:2:3: error: '}' has no matching '{'");
+    EXPECT_EQ(errorOf([] { parse("a {\n b 1;"); }), "testDict:1:3: error: dictionary 'testDict/a' opened by '{' is never closed by '}'");
+    EXPECT_EQ(errorOf([] { parse("a (1 2;"); }), "testDict:1:7: error: found ';' inside the list opened at line 1; is a ')' missing?");
+    EXPECT_EQ(errorOf([] { parse("a 1 2);"); }), "testDict:1:6: error: ')' has no matching '('");
+    EXPECT_EQ(errorOf([] { parse("a 1; /* open"); }), "testDict:1:6: error: comment '/*' is never closed by '*/'");
+    EXPECT_EQ(errorOf([] { parse("s \"open\n;"); }), "testDict:1:3: error: string is not closed by '\"' on the same line");
+    EXPECT_EQ(errorOf([] { parse("3 4;"); }), "testDict:1:1: error: expected a keyword, found number 3");
+    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include)");
+    EXPECT_EQ(errorOf([] { parse("a $missing;"); }),
+              "testDict:1:3: error: macro '$missing' refers to no entry defined before it in this or an enclosing dictionary");
+    EXPECT_EQ(errorOf([] { parse("a ;"); }), "testDict:1:1: error: entry 'a' has no value before ';'");
+}
+
+TEST(Dictionary, MissingIncludeNamesTheDirective) {
+    const std::string message = errorOf([] { parse("#include \"nowhere\""); });
+    EXPECT_NE(message.find("testDict:1:10: error: #include \"nowhere\": error: cannot open dictionary"), std::string::npos) << message;
+    EXPECT_NE(message.find("file not found"), std::string::npos) << message;
+}
+
+TEST(Dictionary, MissingFileIsAnError) {
+    const std::string message = errorOf([] { Dictionary::fromFile("/nonexistent/controlDict"); });
+    EXPECT_EQ(message, "error: cannot open dictionary '/nonexistent/controlDict': file not found");
+}
+
+TEST(Dictionary, TypeErrorsSayWhatWasExpectedAndFound) {
+    const Dictionary d = parse("inner { endTime abc; n 1.5; flag maybe; v (1 x); d { } w 3; many 1 2; neg -1; }");
+    const Dictionary& in = d.subDict("inner");
+    EXPECT_EQ(errorOf([&] { in.get<double>("endTime"); }), "testDict:1:17: error: keyword 'endTime' in dictionary 'testDict/inner': expected a number, found word 'abc'");
+    EXPECT_EQ(errorOf([&] { in.get<int>("n"); }), "testDict:1:24: error: keyword 'n' in dictionary 'testDict/inner': expected an integer, found number 1.5");
+    EXPECT_EQ(errorOf([&] { in.get<bool>("flag"); }),
+              "testDict:1:34: error: keyword 'flag' in dictionary 'testDict/inner': expected a switch (yes/no, true/false, on/off), found word 'maybe'");
+    EXPECT_EQ(errorOf([&] { in.get<std::vector<double>>("v"); }), "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
+    EXPECT_EQ(errorOf([&] { in.get<double>("d"); }), "testDict:1:50: error: keyword 'd' in dictionary 'testDict/inner': expected a number, found a dictionary");
+    EXPECT_EQ(errorOf([&] { in.get<std::string>("w"); }), "testDict:1:58: error: keyword 'w' in dictionary 'testDict/inner': expected a word, found number 3");
+    EXPECT_EQ(errorOf([&] { in.get<double>("many"); }), "testDict:1:68: error: keyword 'many' in dictionary 'testDict/inner': expected a number, found '1 2'");
+    EXPECT_EQ(errorOf([&] { in.getPositive("neg"); }), "testDict:1:71: error: keyword 'neg' in dictionary 'testDict/inner': must be greater than zero, found -1");
+    EXPECT_EQ(errorOf([&] { in.getVector<3>("v"); }), "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
+    EXPECT_EQ(errorOf([&] { in.subDict("w"); }), "testDict:1:56: error: 'w' in dictionary 'testDict/inner' must be a dictionary { ... }, found the value '3'");
+}
+
+TEST(Dictionary, MissingKeywordNamesTheDictionary) {
+    const Dictionary d = parse("kernel\n{\n    hdx 1.3;\n}");
+    EXPECT_EQ(errorOf([&] { d.subDict("kernel").get<std::string>("type"); }),
+              "testDict:2:1: error: keyword 'type' is missing from dictionary 'testDict/kernel'");
+}
+
+TEST(Dictionary, UnusedKeywordsAreReported) {
+    const Dictionary d = parse("FoamFile { version 2; }\nendTime 1;\nendTme 2;\nsub { used 1; typo 2; }\n");
+    d.get<double>("endTime");
+    d.subDict("sub").get<double>("used");
+    const std::string message = errorOf([&] { d.checkUnused(); });
+    EXPECT_NE(message.find("testDict:3:1: 'endTme' in dictionary 'testDict'"), std::string::npos) << message;
+    EXPECT_NE(message.find("testDict:4:15: 'typo' in dictionary 'testDict/sub'"), std::string::npos) << message;
+    EXPECT_EQ(message.find("FoamFile"), std::string::npos) << message;
+}

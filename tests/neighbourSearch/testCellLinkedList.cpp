@@ -1,0 +1,63 @@
+#include "neighbourSearch/CellLinkedList.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace {
+
+template <int D>
+void compareWithBruteForce(int n, double radius) {
+    std::mt19937 random(42 + D);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::vector<sph::Vec<D>> points(static_cast<std::size_t>(n));
+    for (auto& p : points)
+        for (int d = 0; d < D; ++d) p[d] = coordinate(random);
+    sph::CellLinkedList<D> cells(sph::Vec<D>::Zero(), sph::Vec<D>::Ones(), radius);
+    cells.build(points);
+    std::size_t pairs = 0;
+    for (const auto& x : points) {
+        std::vector<std::uint32_t> found, expected;
+        cells.forEachNeighbour(x, radius, [&](std::uint32_t j, const sph::Vec<D>& r, double r2) {
+            found.push_back(j);
+            EXPECT_NEAR(r2, r.squaredNorm(), 1e-15);
+            EXPECT_LT((x - points[j] - r).norm(), 1e-15);
+        });
+        for (std::uint32_t j = 0; j < points.size(); ++j)
+            if ((x - points[j]).squaredNorm() < radius * radius) expected.push_back(j);
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, expected);
+        pairs += found.size();
+    }
+    EXPECT_GT(pairs, points.size());  // the test is not vacuous
+}
+
+}  // namespace
+
+TEST(CellLinkedList, MatchesBruteForce1D) { compareWithBruteForce<1>(500, 0.013); }
+TEST(CellLinkedList, MatchesBruteForce2D) { compareWithBruteForce<2>(2000, 0.05); }
+TEST(CellLinkedList, MatchesBruteForce3D) { compareWithBruteForce<3>(3000, 0.11); }
+
+TEST(CellLinkedList, PointsOutsideTheGridAreStillFound) {
+    std::vector<sph::Vec<2>> points{{-0.05, 0.5}, {1.02, 0.5}, {0.01, 0.5}};
+    sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
+    cells.build(points);
+    int count = 0;
+    cells.forEachNeighbour(sph::Vec<2>(0.0, 0.5), 0.1, [&](std::uint32_t, const sph::Vec<2>&, double) { ++count; });
+    EXPECT_EQ(count, 2);
+}
+
+TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::vector<sph::Vec<2>> points(1000);
+    for (auto& p : points) p = {coordinate(random), coordinate(random)};
+    sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
+    const auto order = cells.cellOrder(points);
+    std::vector<std::uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
+    const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<int>(p.y() * 10) * 10 + static_cast<int>(p.x() * 10); };
+    for (std::size_t k = 1; k < order.size(); ++k) EXPECT_LE(cellOf(points[order[k - 1]]), cellOf(points[order[k]]));
+}

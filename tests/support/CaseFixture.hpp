@@ -1,0 +1,46 @@
+// Test cases written to a fresh directory under the build tree, one file at a time.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace sph::test {
+
+inline std::filesystem::path sourceDirectory() { return SPHKIT_SOURCE_DIR; }
+
+// A new, empty directory named after the running test.
+inline std::filesystem::path freshDirectory() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::filesystem::path dir = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / info->test_suite_name() / info->name();
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline void writeFile(const std::filesystem::path& file, const std::string& text) {
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream(file) << text;
+}
+
+// Copies a shipped case's dictionaries (system/, constant/) into a fresh directory.
+inline std::filesystem::path copyCase(const std::string& name) {
+    const std::filesystem::path dir = freshDirectory();
+    for (const char* part : {"system", "constant"})
+        std::filesystem::copy(sourceDirectory() / "cases" / name / part, dir / part, std::filesystem::copy_options::recursive);
+    return dir;
+}
+
+// Replaces the first occurrence of `from` in a file (to vary a shipped case).
+inline void replaceInFile(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << "'" << from << "' not found in " << file;
+    text.replace(at, from.size(), to);
+    std::ofstream(file) << text;
+}
+
+}  // namespace sph::test
