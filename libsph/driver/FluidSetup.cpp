@@ -67,14 +67,14 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     }
     for (std::size_t i = 0; i < fluid.size(); ++i)
         if ((fluid.position[i].array() < domainMin.array()).any() || (fluid.position[i].array() > domainMax.array()).any())
-            throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({}) lies outside the domain [({}), ({})]", fluidFile.string(),
+            throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({:g}) lies outside the domain [({:g}), ({:g})]", fluidFile.string(),
                                          fluid.globalId[i], fmt::join(fluid.position[i], " "), fmt::join(domainMin, " "), fmt::join(domainMax, " ")));
 
     // Fluid properties and schemes.
     const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
     setup.rho0 = properties.rho0;
     fmt::print("Selecting equationOfState {}\n", describe(properties.eos));
-    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({}), gravityRampTime {:g}\n", properties.rho0, properties.nu, fmt::join(properties.gravity, " "),
+    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({:g}), gravityRampTime {:g}\n", properties.rho0, properties.nu, fmt::join(properties.gravity, " "),
                properties.gravityRampTime);
 
     const Dictionary& kernelDict = schemes.subDict("kernel");

@@ -58,7 +58,7 @@ void checkState(const FluidSystem<D>& system, long step, double t, double rho0) 
     const Vec<D>& lo = system.domainMin();
     const Vec<D>& hi = system.domainMax();
     const auto stop = [&](std::size_t i, const std::string& what) {
-        throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({}) {}.\n"
+        throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
                                      "    The last written time is kept; reduce the time step (courant) or check the case.",
                                      step, t, system.fluid.globalId[i], fmt::join(x[i], " "), what));
     };
@@ -68,7 +68,7 @@ void checkState(const FluidSystem<D>& system, long step, double t, double rho0) 
         if (!std::isfinite(rho[i]) || rho[i] < 0.5 * rho0 || rho[i] > 2.0 * rho0)
             stop(i, fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0));
         if ((x[i].array() < lo.array()).any() || (x[i].array() > hi.array()).any())
-            stop(i, fmt::format("left the domain [({}), ({})]", fmt::join(lo, " "), fmt::join(hi, " ")));
+            stop(i, fmt::format("left the domain [({:g}), ({:g})]", fmt::join(lo, " "), fmt::join(hi, " ")));
     }
 }
 
@@ -104,9 +104,10 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
     const auto runFunctionObjects = [&](double t, bool force) {
         auto timer = system.timers.time(Stage::FunctionObjects);
         for (auto& entry : functionObjects) {
-            if (!force && t < entry.nextTime - 1e-12 * std::max(1.0, std::abs(t))) continue;
+            // Executes at the first step at or after each multiple of the interval, and at the end.
+            if (!force && t < entry.nextTime - 1e-6 * entry.interval) continue;
             entry.object->execute(system, t);
-            entry.nextTime = t + entry.interval;
+            while (entry.nextTime <= t + 1e-6 * entry.interval && entry.interval > 0.0) entry.nextTime += entry.interval;
         }
     };
 
@@ -131,7 +132,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         t = (t + dt > target - timeTolerance) ? target : t + dt;
         ++step;
         checkState(system, step, t, setup.rho0);
-        runFunctionObjects(t, false);
+        runFunctionObjects(t, t >= endTime - timeTolerance);
         if (t >= nextWrite - timeTolerance || t >= endTime - timeTolerance) {
             write(t, step);
             while (nextWrite <= t + timeTolerance) nextWrite += writeInterval;

@@ -27,7 +27,7 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext& c
 
 template <int D>
 std::string LineSample<D>::describe() const {
-    return fmt::format("lineSample: start ({}), end ({}), points {}{}", fmt::join(start_, " "), fmt::join(end_, " "), points_,
+    return fmt::format("lineSample: start ({:g}), end ({:g}), points {}{}", fmt::join(start_, " "), fmt::join(end_, " "), points_,
                        freeSurfaceHeight_ ? fmt::format(", hydrostatic reference H = {:g}", *freeSurfaceHeight_) : "");
 }
 

@@ -21,7 +21,7 @@ SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext& c
 
 template <int D>
 std::string SurgeFront<D>::describe() const {
-    return fmt::format("surgeFront: origin {}, direction {}", fmt::join(origin_, " "), fmt::join(direction_, " "));
+    return fmt::format("surgeFront: origin ({:g}), direction ({:g})", fmt::join(origin_, " "), fmt::join(direction_, " "));
 }
 
 template <int D>

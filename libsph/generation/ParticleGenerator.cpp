@@ -48,7 +48,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
             const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx);
             for (std::size_t k = 0; k < generated.positions.size(); ++k) {
                 if (!insideDomain<D>(generated.positions[k], lo, hi))
-                    throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({}) outside the domain [({}), ({})]", name,
+                    throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
                                                                 fmt::join(generated.positions[k], " "), fmt::join(lo, " "), fmt::join(hi, " ")));
                 allWalls.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k]);
                 patchOf.push_back(static_cast<int>(patchNames.size()));
@@ -72,7 +72,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         std::size_t first = fluidPositions.size();
         for (const Vec<D>& x : filled.positions) {
             if (!insideDomain<D>(x, lo, hi))
-                throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({}) outside the domain [({}), ({})]", name,
+                throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
                                                              fmt::join(x, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
             bool overlapsWall = false;
             wallCells.forEachNeighbour(x, 0.5 * dx * (1.0 - 1e-9), [&](std::uint32_t, const Vec<D>&, double) { overlapsWall = true; });

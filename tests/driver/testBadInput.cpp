@@ -1,0 +1,159 @@
+// Every error a user can make in a case ends the run before the first step with a message
+// naming the file, the keyword and what is expected.
+#include "core/FatalError.hpp"
+#include "driver/Simulation.hpp"
+#include "generation/ParticleGenerator.hpp"
+#include "io/ParticleFile.hpp"
+#include "support/CaseFixture.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace sph::test;
+
+namespace {
+
+// The FatalError message of generating and running the case ("" if it succeeds).
+std::string failureOf(const std::filesystem::path& dir, bool generate = true) {
+    try {
+        if (generate) sph::generateParticles(dir, true);
+        sph::runCase(dir);
+    } catch (const sph::FatalError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expectContains(const std::string& message, const std::string& part) {
+    EXPECT_NE(message.find(part), std::string::npos) << "message:\n" << message << "\nexpected to contain:\n" << part;
+}
+
+}  // namespace
+
+TEST(BadInput, MissingDictionary) {
+    const auto dir = copyCase("damBreak2D");
+    std::filesystem::remove(dir / "system/sphSchemes");
+    expectContains(failureOf(dir), "error: cannot open dictionary '" + (dir / "system/sphSchemes").string() + "': file not found");
+}
+
+TEST(BadInput, SyntaxErrorNamesFileLineAndColumn) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "courant     0.2;", "courant     0.2");
+    expectContains(failureOf(dir), (dir / "system/timeIntegration").string() + ":2:1: error: entry 'courant' is not terminated by ';'");
+}
+
+TEST(BadInput, UnknownModelListsTheValidNames) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/sphSchemes", "type wendlandC2;", "type wendland;");
+    expectContains(failureOf(dir), (dir / "system/sphSchemes").string() +
+                                       ":1:28: error: unknown kernel 'wendland'; valid kernel names are:\n    cubicSpline\n    quinticSpline\n"
+                                       "    wendlandC2\n    wendlandC4");
+}
+
+TEST(BadInput, UnknownBoundaryModel) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "constant/boundaryProperties", "dummyParticles", "ghostParticles");
+    expectContains(failureOf(dir), "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    dummyParticles\n    dynamicBoundary");
+}
+
+TEST(BadInput, NegativeOrZeroSpacing) {
+    for (const std::string spacing : {"-0.00142875", "0"}) {
+        const auto dir = copyCase("damBreak2D");
+        replaceInFile(dir / "system/generateParticlesDict", "spacing     0.00142875;", "spacing     " + spacing + ";");
+        expectContains(failureOf(dir), "error: keyword 'spacing' in dictionary 'generateParticlesDict': must be greater than zero, found " + spacing);
+    }
+}
+
+TEST(BadInput, SmoothingLengthSmallerThanSpacing) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/sphSchemes", "hdx 1.3;", "hdx 0.8;");
+    expectContains(failureOf(dir), "error: keyword 'hdx' in dictionary 'sphSchemes/kernel': h = hdx dx must not be smaller than the particle spacing; "
+                                   "found hdx 0.8 (valid: >= 1)");
+}
+
+TEST(BadInput, FluidOutsideTheDomain) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "column  { type box; min (0 0); max ($a 0.1143); }",
+                  "column  { type box; min (-0.05715 0); max (0 0.1143); }");
+    const std::string message = failureOf(dir);
+    expectContains(message, (dir / "system/generateParticlesDict").string() + ":12:13:");
+    expectContains(message, "error: fluid region 'column' has a particle at (-0.0564356 0.000714375) outside the domain [(-0.03 -0.03), (0.43 0.2)]");
+}
+
+TEST(BadInput, NoFluidParticles) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "column  { type box; min (0 0); max ($a 0.1143); }",
+                  "column  { type circle; centre (0.1 0.1); radius 0.0001; }");
+    expectContains(failureOf(dir), "error: fluid region 'column' holds no particle");
+}
+
+TEST(BadInput, EmptyFluidStateIsRejectedBySolver) {
+    const auto dir = copyCase("damBreak2D");
+    sph::generateParticles(dir, true);
+    sph::StateHeader header;
+    auto fluid = sph::readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
+    fluid.resize(0);
+    sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "error: '" + (dir / "0/fluid.vtu").string() + "' holds no fluid particles");
+}
+
+TEST(BadInput, MissingStateTellsToGenerateParticles) {
+    const auto dir = copyCase("damBreak2D");
+    expectContains(failureOf(dir, false), "has no time directory with a fluid.vtu state; run generateParticles first to write 0/");
+}
+
+TEST(BadInput, MissingKeyword) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/controlDict", "endTime ", "endTme ");
+    expectContains(failureOf(dir), "error: keyword 'endTime' is missing from dictionary 'controlDict'");
+}
+
+TEST(BadInput, MisspeltOptionalKeywordIsNotIgnored) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "courant", "courrant");
+    const std::string message = failureOf(dir);
+    expectContains(message, "keyword(s) not recognised by the selected models");
+    expectContains(message, (dir / "system/timeIntegration").string() + ":2:1: 'courrant' in dictionary 'timeIntegration'");
+}
+
+TEST(BadInput, WrongTypeSaysWhatWasFound) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/controlDict", "writeInterval   0.01;", "writeInterval   often;");
+    expectContains(failureOf(dir), "error: keyword 'writeInterval' in dictionary 'controlDict': expected a number, found word 'often'");
+}
+
+TEST(BadInput, PatchThatIsNotInTheState) {
+    const auto dir = copyCase("damBreak2D");
+    writeFile(dir / "constant/boundaryProperties", "tank { type dummyParticles; }\nlid { type dynamicBoundary; }\n");
+    expectContains(failureOf(dir), "error: patch 'lid' in constant/boundaryProperties is not a wall patch of the case; its patches are: tank");
+}
+
+TEST(BadInput, DiffusionWithSummationDensity) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/sphSchemes", "type continuity;", "type summation;");
+    expectContains(failureOf(dir), "density diffusion acts on the continuity equation; with summation density select 'none'");
+}
+
+TEST(BadInput, SpeedOfSoundMissing) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "constant/fluidProperties", "c0FromHeight", "c0Height");
+    expectContains(failureOf(dir), "error: dictionary 'fluidProperties/equationOfState' needs the speed of sound: 'c0 <value>;' or "
+                                   "'c0FromHeight { coefficient 10; height <H>; }'");
+}
+
+TEST(BadInput, BoxNotAWholeNumberOfSpacings) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "max (0.40005 0.17145)", "max (0.4 0.17145)");
+    expectContains(failureOf(dir), "error: keyword 'max' in dictionary 'generateParticlesDict/boundaries/tank': the extent 0.4 (from 0 to 0.4) must be a "
+                                   "positive whole number of spacings dx = 0.00142875");
+}
+
+TEST(BadInput, ExistingInitialStateIsNotOverwrittenByDefault) {
+    const auto dir = copyCase("damBreak2D");
+    sph::generateParticles(dir, false);
+    try {
+        sph::generateParticles(dir, false);
+        FAIL() << "0/ was overwritten";
+    } catch (const sph::FatalError& e) {
+        expectContains(e.what(), "exists; remove it (./Allclean) or pass -overwrite");
+    }
+}
