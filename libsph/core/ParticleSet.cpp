@@ -32,25 +32,27 @@ void ParticleSet<D>::resize(std::size_t owned) {
     for (auto& [name, f] : integers_) f.values.resize(owned, 0);
 }
 
-template <int D>
-std::vector<double>& ParticleSet<D>::addScalar(const std::string& field, double initial, bool written) {
-    auto [it, inserted] = scalars_.try_emplace(field, Field<double>{std::vector<double>(size(), initial), written});
+// Adds a field of `initial` values, or returns the existing one (written if either asks).
+template <class Map, class T>
+auto& addField(Map& fields, const std::string& field, std::size_t size, const T& initial, bool written) {
+    auto [it, inserted] = fields.try_emplace(field, typename Map::mapped_type{std::vector<T>(size, initial), written});
     if (!inserted) it->second.written = it->second.written || written;
     return it->second.values;
+}
+
+template <int D>
+std::vector<double>& ParticleSet<D>::addScalar(const std::string& field, double initial, bool written) {
+    return addField(scalars_, field, size(), initial, written);
 }
 
 template <int D>
 std::vector<Vec<D>>& ParticleSet<D>::addVector(const std::string& field, const Vec<D>& initial, bool written) {
-    auto [it, inserted] = vectors_.try_emplace(field, Field<Vec<D>>{std::vector<Vec<D>>(size(), initial), written});
-    if (!inserted) it->second.written = it->second.written || written;
-    return it->second.values;
+    return addField(vectors_, field, size(), initial, written);
 }
 
 template <int D>
 std::vector<int>& ParticleSet<D>::addInteger(const std::string& field, int initial, bool written) {
-    auto [it, inserted] = integers_.try_emplace(field, Field<int>{std::vector<int>(size(), initial), written});
-    if (!inserted) it->second.written = it->second.written || written;
-    return it->second.values;
+    return addField(integers_, field, size(), initial, written);
 }
 
 template <int D>

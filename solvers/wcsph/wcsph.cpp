@@ -2,12 +2,11 @@
 // the current directory) from its start time to endTime.
 #include "driver/ModelCatalogue.hpp"
 #include "driver/Simulation.hpp"
-#include "core/FatalError.hpp"
+#include "core/ExitOnError.hpp"
 
 #include <fmt/format.h>
 
 #include <cstring>
-#include <exception>
 #include <string>
 
 namespace {
@@ -48,14 +47,5 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
     }
-    try {
-        sph::runCase(caseDirectory);
-    } catch (const sph::FatalError& e) {
-        fmt::print(stderr, "\n{}\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "\nerror: internal error: {}\n", e.what());
-        return 3;
-    }
-    return 0;
+    return sph::exitCodeOf([&] { sph::runCase(caseDirectory); });
 }

@@ -1,10 +1,9 @@
 // generateParticles: writes a case's initial particle state 0/ from system/generateParticlesDict.
-#include "core/FatalError.hpp"
+#include "core/ExitOnError.hpp"
 #include "generation/ParticleGenerator.hpp"
 
 #include <fmt/format.h>
 
-#include <exception>
 #include <string>
 
 namespace {
@@ -40,18 +39,11 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    try {
+    return sph::exitCodeOf([&] {
         const sph::GenerationSummary summary = sph::generateParticles(caseDirectory, overwrite);
         fmt::print("generateParticles: {}D, {} fluid particles, {} wall particles written to {}/0/", summary.dimension, summary.fluidParticles,
                    summary.wallParticles, caseDirectory);
         if (summary.droppedFluidParticles > 0) fmt::print(" ({} fluid particles overlapping walls dropped)", summary.droppedFluidParticles);
         fmt::print("\n");
-    } catch (const sph::FatalError& e) {
-        fmt::print(stderr, "{}\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "error: internal error: {}\n", e.what());
-        return 3;
-    }
-    return 0;
+    });
 }
