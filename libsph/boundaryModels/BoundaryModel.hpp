@@ -1,11 +1,16 @@
-// A boundary model acts on the wall particles of one patch. Models that act through wall
-// particles (dummy particles, dynamic boundary) set the wall pressure, density and the
-// velocity the viscous term sees, once per evaluation, before the force loop; the force loop
-// then treats every wall particle alike, so it never branches on a patch's model.
+// A boundary model acts on the wall particles of one patch, in one of two ways:
+//  - through wall particles (dummy particles, dynamic boundary): the patch's particles enter the
+//    fluid's kernel sums; updateWalls() sets their pressure, density and the velocity the
+//    viscous term sees, once per evaluation, before the force loop, which then treats every
+//    such wall particle alike and never branches on a patch's model;
+//  - by wall forces (repulsion, the deficiency correction): the patch's particles stay out of
+//    the kernel sums; addWallForces() adds accelerations to the fluid after the force loop,
+//    reading the uncorrected acceleration when it needs it.
 #pragma once
 
 #include "core/Registry.hpp"
 #include "io/Dictionary.hpp"
+#include "neighbourSearch/CellLinkedList.hpp"
 
 #include <memory>
 #include <string>
@@ -23,11 +28,25 @@ public:
     // One line for the run log: the type and its coefficients.
     virtual std::string describe() const = 0;
 
+    // True when the patch's particles enter the fluid's kernel sums (dummy, dynamic boundary).
+    virtual bool actsThroughWallParticles() const = 0;
+
     // True when the patch's wall density is part of the integrated state.
     virtual bool evolvesWallDensity() const { return false; }
 
-    // Sets the state of wall particles [begin, end) from the fluid at time t.
-    virtual void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) = 0;
+    // True when addWallForces() reads the fluid's acceleration before any wall force.
+    virtual bool needsUncorrectedAcceleration() const { return false; }
+
+    // Adds the fields the model reads or writes, once, before the first evaluation.
+    virtual void addFields(FluidSystem<D>& /*system*/) {}
+
+    // Stage 3: sets the state of wall particles [begin, end) from the fluid at time t.
+    virtual void updateWalls(FluidSystem<D>& /*system*/, std::size_t /*begin*/, std::size_t /*end*/, double /*t*/) {}
+
+    // Stage 5: adds the patch's accelerations to the fluid. `patchCells` indexes the patch's
+    // particles [begin, end) of the wall set.
+    virtual void addWallForces(FluidSystem<D>& /*system*/, const CellLinkedList<D>& /*patchCells*/, std::size_t /*begin*/, std::size_t /*end*/,
+                               double /*t*/) {}
 };
 
 template <int D>

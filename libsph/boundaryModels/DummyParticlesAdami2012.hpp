@@ -19,6 +19,7 @@ class DummyParticlesAdami2012 : public BoundaryModel<D> {
 public:
     explicit DummyParticlesAdami2012(const Dictionary& dict);
 
+    bool actsThroughWallParticles() const override { return true; }
     std::string describe() const override;
     void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
 

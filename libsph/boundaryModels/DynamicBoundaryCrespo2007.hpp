@@ -16,6 +16,7 @@ namespace sph {
 template <int D>
 class DynamicBoundaryCrespo2007 : public BoundaryModel<D> {
 public:
+    bool actsThroughWallParticles() const override { return true; }
     std::string describe() const override { return "dynamicBoundary"; }
     bool evolvesWallDensity() const override { return true; }
     void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;

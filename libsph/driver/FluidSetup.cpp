@@ -113,20 +113,33 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
                              fmt::format("patch '{}' in constant/boundaryProperties is not a wall patch of the case; its patches are: {}", keyword,
                                          setup.patchNames.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(setup.patchNames, ", "))));
     }
-    std::vector<std::uint32_t> byPatch(walls.size());
-    for (std::uint32_t i = 0; i < byPatch.size(); ++i) byPatch[i] = i;
-    std::stable_sort(byPatch.begin(), byPatch.end(), [&](std::uint32_t a, std::uint32_t b) { return patchOfWall[a] < patchOfWall[b]; });
-    walls.permute(byPatch);
-    std::vector<Patch<D>> patches;
     const auto boundaryRegistry = makeBoundaryModelRegistry<D>();
-    for (std::size_t p = 0; p < setup.patchNames.size(); ++p) {
-        const auto& sortedPatch = walls.integer("patch");
+    std::vector<std::unique_ptr<BoundaryModel<D>>> boundaryModels;
+    for (const std::string& name : setup.patchNames) {
+        const Dictionary& patchDict = boundaryDict.subDict(name);
+        boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict));
+    }
+    // Wall-particle patches first (they enter the kernel sums), then wall-force patches.
+    const auto rank = [&](int patch) {
+        return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);
+    };
+    std::vector<std::uint32_t> order(walls.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return rank(patchOfWall[a]) < rank(patchOfWall[b]); });
+    walls.permute(order);
+    std::vector<Patch<D>> patches;
+    const auto& sortedPatch = walls.integer("patch");
+    std::vector<std::size_t> patchOrder(setup.patchNames.size());
+    for (std::size_t p = 0; p < patchOrder.size(); ++p) patchOrder[p] = p;
+    std::stable_sort(patchOrder.begin(), patchOrder.end(), [&](std::size_t a, std::size_t b) { return rank(static_cast<int>(a)) < rank(static_cast<int>(b)); });
+    std::size_t begin = 0;
+    for (std::size_t p : patchOrder) {
         Patch<D> patch;
         patch.name = setup.patchNames[p];
-        patch.begin = static_cast<std::size_t>(std::lower_bound(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)) - sortedPatch.begin());
-        patch.end = static_cast<std::size_t>(std::upper_bound(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)) - sortedPatch.begin());
-        const Dictionary& patchDict = boundaryDict.subDict(patch.name);
-        patch.model = selectByType(boundaryRegistry, patchDict, patchDict);
+        patch.begin = begin;
+        patch.end = begin + static_cast<std::size_t>(std::count(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)));
+        begin = patch.end;
+        patch.model = std::move(boundaryModels[p]);
         fmt::print("Selecting boundary model for patch {} ({} particles): {}\n", patch.name, patch.end - patch.begin, patch.model->describe());
         patches.push_back(std::move(patch));
     }

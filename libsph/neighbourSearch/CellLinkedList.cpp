@@ -20,19 +20,19 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
 }
 
 template <int D>
-void CellLinkedList<D>::build(const std::vector<Vec<D>>& points) {
+void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
     points_ = &points;
-    const std::size_t n = points.size();
+    const std::size_t n = end - begin;
     std::vector<std::uint32_t> cellOf(n);
     std::fill(cellStart_.begin(), cellStart_.end(), 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        cellOf[i] = static_cast<std::uint32_t>(cellIndex(points[i]));
-        ++cellStart_[cellOf[i] + 1];
+    for (std::size_t k = 0; k < n; ++k) {
+        cellOf[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
+        ++cellStart_[cellOf[k] + 1];
     }
     for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
     sorted_.resize(n);
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) sorted_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t k = 0; k < n; ++k) sorted_[fill[cellOf[k]]++] = static_cast<std::uint32_t>(begin + k);
 }
 
 template <int D>

@@ -19,7 +19,9 @@ public:
     CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double cellSize);
 
     // Sorts the points into cells; the list refers to `points` until the next build.
-    void build(const std::vector<Vec<D>>& points);
+    void build(const std::vector<Vec<D>>& points) { build(points, 0, points.size()); }
+    // Only points [begin, end) (one wall patch, say); queries report their indices in `points`.
+    void build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end);
 
     // Order of the points sorted by cell (for reordering particle storage).
     std::vector<std::uint32_t> cellOrder(const std::vector<Vec<D>>& points) const;

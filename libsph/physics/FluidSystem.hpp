@@ -4,10 +4,16 @@
 // One evaluation runs these stages; a stage with nothing selected costs nothing:
 //   1. neighbours   cell-linked list of the fluid (walls are indexed once, they do not move yet)
 //   2. density      summation density (if selected), then pressure from the equation of state
-//   3. boundary     each patch's model sets its wall particles' pressure, density, velocity
+//   3. boundary     each wall-particle patch's model sets its particles' pressure, density,
+//                   velocity
 //   4. forces       pressure gradient, viscosity, gravity, continuity rate and density diffusion
 //                   over fluid-fluid and fluid-wall pairs, in one loop templated on the kernel,
 //                   viscosity, density diffusion and density formulation (one std::visit)
+//   5. wall forces  repulsion and deficiency-correction patches add their accelerations; the
+//                   acceleration of stage 4 is kept as uncorrectedAcceleration when one of them
+//                   reads it
+// The wall set holds the wall-particle patches first, then the wall-force patches; only the
+// first enter the kernel sums.
 #pragma once
 
 #include "boundaryModels/BoundaryModel.hpp"
@@ -33,6 +39,7 @@ struct Patch {
     std::string name;
     std::size_t begin = 0, end = 0;  // range in the wall particle set
     std::unique_ptr<BoundaryModel<D>> model;
+    std::optional<CellLinkedList<D>> cells;  // the patch's particles, for wall-force models
 };
 
 template <int D>
@@ -82,6 +89,7 @@ private:
     void computeSummationDensity();
     void computeFluidPressure();
     void computeForces(const Vec<D>& gravity);
+    void addWallForces(double t);
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;
@@ -89,6 +97,8 @@ private:
     double gravityRampTime_;
     double supportRadius_;
     bool wallDensityEvolves_ = false;
+    bool keepsUncorrectedAcceleration_ = false;
+    std::size_t wallParticleEnd_ = 0;  // walls [0, wallParticleEnd_) enter the kernel sums
     CellLinkedList<D> fluidCells_;
     CellLinkedList<D> wallCells_;
 };

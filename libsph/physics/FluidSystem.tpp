@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace sph {
 
@@ -16,15 +17,28 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
       supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
       fluidCells_(domainMin, domainMax, supportRadius_), wallCells_(domainMin, domainMax, supportRadius_) {
     fluid.addScalar("pressure", 0.0);
-    fluid.addVector("acceleration", Vec<D>::Zero(), false);
+    fluid.addVector("acceleration", Vec<D>::Zero());
     if (continuity()) fluid.addScalar("densityRate", 0.0, false);
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     walls.addVector("velocity", Vec<D>::Zero(), false);
     if (std::visit([](const auto& v) { return v.enabled; }, models_.viscosity)) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
-    for (const Patch<D>& patch : patches) wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
+    wallParticleEnd_ = patches.empty() ? walls.size() : 0;
+    for (Patch<D>& patch : patches) {
+        if (patch.model->actsThroughWallParticles()) {
+            if (wallParticleEnd_ != patch.begin) throw std::logic_error("wall-particle patches must precede wall-force patches");
+            wallParticleEnd_ = patch.end;
+        } else {
+            patch.cells.emplace(domainMin, domainMax, supportRadius_);
+            patch.cells->build(walls.position, patch.begin, patch.end);
+        }
+        wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
+        keepsUncorrectedAcceleration_ = keepsUncorrectedAcceleration_ || patch.model->needsUncorrectedAcceleration();
+        patch.model->addFields(*this);
+    }
     if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0, false);
-    wallCells_.build(walls.position);
+    if (keepsUncorrectedAcceleration_) fluid.addVector("uncorrectedAcceleration", Vec<D>::Zero());
+    wallCells_.build(walls.position, 0, wallParticleEnd_);
 }
 
 template <int D>
@@ -58,10 +72,22 @@ void FluidSystem<D>::evaluateRates(double t) {
     }
     {
         auto timer = timers.time(Stage::Boundary);
-        for (Patch<D>& patch : patches) patch.model->updateWalls(*this, patch.begin, patch.end, t);
+        for (Patch<D>& patch : patches)
+            if (!patch.cells) patch.model->updateWalls(*this, patch.begin, patch.end, t);
     }
-    auto timer = timers.time(Stage::Forces);
-    computeForces(gravityAt(t));
+    {
+        auto timer = timers.time(Stage::Forces);
+        computeForces(gravityAt(t));
+    }
+    addWallForces(t);
+}
+
+template <int D>
+void FluidSystem<D>::addWallForces(double t) {
+    auto timer = timers.time(Stage::Boundary);
+    if (keepsUncorrectedAcceleration_) fluid.vector("uncorrectedAcceleration") = fluid.vector("acceleration");
+    for (Patch<D>& patch : patches)
+        if (patch.cells) patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
 }
 
 template <int D>
