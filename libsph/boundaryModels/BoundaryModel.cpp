@@ -1,6 +1,10 @@
 #include "boundaryModels/BoundaryModel.hpp"
 
+#include "boundaryModels/DeficiencyCorrection.hpp"
+#include "boundaryModels/DeficiencyWeightingBoundaryIntegral.hpp"
+#include "boundaryModels/DeficiencyWeightingJones2010.hpp"
 #include "boundaryModels/DummyParticlesAdami2012.hpp"
+#include "boundaryModels/RepulsiveWall.hpp"
 #include "boundaryModels/DynamicBoundaryCrespo2007.hpp"
 
 namespace sph {
@@ -12,9 +16,39 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                  {"fixed dummy particles, pressure extrapolated from the fluid", "Adami, Hu & Adams, J. Comput. Phys. 231 (2012) 7057",
                   {{"noSlip", "yes", "viscous wall velocity 2 v_w - v~ (yes) or v~ (no, free slip)"},
                    {"clampNegativePressure", "yes", "wall pressure never below the background pressure"}}},
-                 [](const Dictionary& dict) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DummyParticlesAdami2012<D>>(dict); });
+                 [](const Dictionary& dict, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DummyParticlesAdami2012<D>>(dict); });
     registry.add("dynamicBoundary", {"wall particles with continuity density and EOS pressure", "Crespo, Gomez-Gesteira & Dalrymple, CMC 5 (2007) 173", {}},
-                 [](const Dictionary&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DynamicBoundaryCrespo2007<D>>(); });
+                 [](const Dictionary&, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DynamicBoundaryCrespo2007<D>>(); });
+    const CoefficientDoc K{"K", "", "squared velocity, ~ g H (kernel normalised to 1 at contact)"};
+    const CoefficientDoc form{"form", "square", "square: r/|r|^2; shifted: r/(|r| max(|r| - shift, 0.1 dx))"};
+    const CoefficientDoc shift{"shift", "dx/2", "with form shifted: distance of the singularity"};
+    registry.add("monaghanKajtar", {"repulsive force (K/beta) r/|r|^2 W/W(0) 2m_k/(m_a + m_k)", "Monaghan & Kajtar, Comput. Phys. Commun. 180 (2009) 1811",
+                                    {K, form, shift}},
+                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
+                 });
+    registry.add("lennardJones", {"Dc [(r0/r)^p1 - (r0/r)^p2] r/r^2 for r < r0", "Monaghan, J. Comput. Phys. 110 (1994) 399",
+                                  {{"Dc", "", "squared velocity, ~ 5 g H"}, {"r0", "dx", "range"}, {"p1", "12", ""}, {"p2", "4", ""}}},
+                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
+                 });
+    const std::vector<CoefficientDoc> correction{
+        {"repulsion", "", "{ type monaghanKajtar | lennardJones; ... }: the partner that stops penetration"},
+        {"calibration", "calibrated", "calibrated (divide by the blended kernel c_s . n_j) or literal (by W_sj)"},
+        {"direction", "normal", "normal (n_j) or radial (r_ij/|r_ij|)"},
+        {"sample", "{ type nearest; size 4; }", "or { type withinRadius; radius r; }"},
+        {"temporalSmoothing", "1", "lambda of C_j <- (1 - lambda) C_j + lambda C_j^new, in (0, 1]"}};
+    registry.add("deficiencyCorrection", {"boundary deficiency correction, published weighting, with a repulsion partner",
+                                          "Jones, Yang & McCue-Weil, Ship Sci. & Tech. 4(7) (2010) 21", correction},
+                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingJones2010>>(dict, context, "deficiencyCorrection");
+                 });
+    registry.add("deficiencyCorrectionBoundaryIntegral",
+                 {"deficiency correction weighted by wall area vectors (divergence theorem), unnormalised", "sphkit; METHOD.md open improvements", correction},
+                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingBoundaryIntegral>>(dict, context,
+                                                                                                         "deficiencyCorrectionBoundaryIntegral");
+                 });
     return registry;
 }
 

@@ -11,6 +11,7 @@
 #include "core/Registry.hpp"
 #include "io/Dictionary.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
+#include "physics/ModelContext.hpp"
 
 #include <memory>
 #include <string>
@@ -50,7 +51,7 @@ public:
 };
 
 template <int D>
-using BoundaryModelRegistry = Registry<std::unique_ptr<BoundaryModel<D>>, const Dictionary&>;
+using BoundaryModelRegistry = Registry<std::unique_ptr<BoundaryModel<D>>, const Dictionary&, const ModelContext&>;
 
 template <int D>
 BoundaryModelRegistry<D> makeBoundaryModelRegistry();

@@ -85,7 +85,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     fmt::print("Selecting kernel {}: hdx {:g}, dx {:g}, h {:g}, support radius {:g}\n", kernelDict.get<std::string>("type"), hdx, dx, h,
                std::visit([](const auto& k) { return k.supportRadius(); }, kernel));
 
-    const ModelContext context{h, properties.c0, properties.rho0, properties.nu,
+    const ModelContext context{dx, h, properties.c0, properties.rho0, properties.nu,
                                std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
                                std::visit([](const auto& e) { return e.exponent(); }, properties.eos)};
     const Dictionary& densityDict = schemes.subDict("density");
@@ -117,7 +117,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     std::vector<std::unique_ptr<BoundaryModel<D>>> boundaryModels;
     for (const std::string& name : setup.patchNames) {
         const Dictionary& patchDict = boundaryDict.subDict(name);
-        boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict));
+        boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
     // Wall-particle patches first (they enter the kernel sums), then wall-force patches.
     const auto rank = [&](int patch) {

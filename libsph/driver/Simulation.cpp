@@ -4,6 +4,7 @@
 #include "driver/FluidSetup.hpp"
 #include "driver/Progress.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "io/ParticleCsv.hpp"
 #include "io/ParticleFile.hpp"
 #include "io/PvdCollection.hpp"
 #include "io/SelectByType.hpp"
@@ -73,7 +74,7 @@ void checkState(const FluidSystem<D>& system, long step, double t, double rho0) 
 }
 
 template <int D>
-void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start) {
+void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
 
@@ -89,18 +90,30 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         if (written.time <= start.time) pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
 
     StateHeader header = setup.header;
-    const auto write = [&](double t, long step) {
-        auto timer = system.timers.time(Stage::Output);
-        const std::string name = timeName(t);
-        std::filesystem::create_directories(caseDirectory / name);
+    const auto writeState = [&](const std::filesystem::path& directory, double t, long step) {
+        std::filesystem::create_directories(directory);
         header.time = t;
         header.step = step;
         StateHeader wallHeader = header;
         wallHeader.patchNames = setup.patchNames;
-        writeParticleFile(caseDirectory / name / "fluid.vtu", system.fluid, header);
-        writeParticleFile(caseDirectory / name / "walls.vtu", system.walls, wallHeader);
+        writeParticleFile(directory / "fluid.vtu", system.fluid, header);
+        writeParticleFile(directory / "walls.vtu", system.walls, wallHeader);
+    };
+    const auto write = [&](double t, long step) {
+        auto timer = system.timers.time(Stage::Output);
+        const std::string name = timeName(t);
+        writeState(caseDirectory / name, t, step);
         pvd.add(t, {name + "/fluid.vtu", name + "/walls.vtu"});
     };
+    if (mode == RunMode::RatesOnly) {
+        system.evaluateRates(start.time);
+        const auto directory = caseDirectory / "postProcessing" / "rates" / timeName(start.time);
+        writeState(directory, start.time, header.step);
+        writeParticleCsv(directory / "fluid.csv", system.fluid);
+        writeParticleCsv(directory / "walls.csv", system.walls);
+        fmt::print("\nWrote the right-hand side at t = {:g} to {}\n", start.time, directory.string());
+        return;
+    }
     const auto runFunctionObjects = [&](double t, bool force) {
         auto timer = system.timers.time(Stage::FunctionObjects);
         for (auto& entry : functionObjects) {
@@ -160,7 +173,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
 }  // namespace
 
-void runCase(const std::filesystem::path& caseDirectory) {
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode) {
     if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
     const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
     controlDict.findEntry("application");  // informational, as in OpenFOAM
@@ -168,13 +181,13 @@ void runCase(const std::filesystem::path& caseDirectory) {
     const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
     switch (dimension) {
 #ifdef SPHKIT_HAS_1D
-        case 1: return run<1>(caseDirectory, controlDict, start);
+        case 1: return run<1>(caseDirectory, controlDict, start, mode);
 #endif
 #ifdef SPHKIT_HAS_2D
-        case 2: return run<2>(caseDirectory, controlDict, start);
+        case 2: return run<2>(caseDirectory, controlDict, start, mode);
 #endif
 #ifdef SPHKIT_HAS_3D
-        case 3: return run<3>(caseDirectory, controlDict, start);
+        case 3: return run<3>(caseDirectory, controlDict, start, mode);
 #endif
         default: break;
     }

@@ -7,7 +7,12 @@
 
 namespace sph {
 
-// Runs the case to its endTime. Throws FatalError for bad input or a run that blows up.
-void runCase(const std::filesystem::path& caseDirectory);
+enum class RunMode {
+    TimeLoop,   // from the start time to endTime
+    RatesOnly,  // evaluate the right-hand side once at the start time and write it to postProcessing/rates/<time>/
+};
+
+// Runs the case. Throws FatalError for bad input or a run that blows up.
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode = RunMode::TimeLoop);
 
 }  // namespace sph

@@ -86,6 +86,41 @@ WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, d
     return walls;
 }
 
+// A closed polygon with a particle on every vertex (normal along the bisector of its two
+// faces' normals) and equal spacing along each side.
+WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
+    const std::vector<Vec<2>> points = readPointList(patch, "points");
+    if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
+    const std::string side = patch.getOrDefault<std::string>("side", "left");
+    if (side != "left" && side != "right") patch.fail("side", "expected left or right, found '" + side + "'");
+    const double sign = side == "left" ? 1.0 : -1.0;
+    const std::size_t m = points.size();
+    std::vector<Vec<2>> faceNormal(m);
+    std::vector<int> count(m);
+    for (std::size_t s = 0; s < m; ++s) {
+        const Vec<2> along = points[(s + 1) % m] - points[s];
+        if (!(along.norm() > 0.0)) patch.fail("points", fmt::format("points {} and {} coincide", s, (s + 1) % m));
+        faceNormal[s] = sign * Vec<2>(-along.y(), along.x()).normalized();
+        count[s] = std::max(1, static_cast<int>(std::lround(along.norm() / dx)));
+    }
+    WallPatchParticles<2> walls;
+    for (int layer = 0; layer < layers; ++layer) {
+        const double distance = (layer + offset) * dx;
+        for (std::size_t s = 0; s < m; ++s) {
+            const Vec<2> along = points[(s + 1) % m] - points[s];
+            const double faceSpacing = along.norm() / count[s];
+            // The vertex: bisector normal, moved so both faces' offset lines pass through it.
+            const std::size_t previous = (s + m - 1) % m;
+            const Vec<2> bisector = (faceNormal[previous] + faceNormal[s]).normalized();
+            const double previousSpacing = (points[s] - points[previous]).norm() / count[previous];
+            walls.add(points[s] - distance / bisector.dot(faceNormal[s]) * bisector, bisector, 0.5 * (previousSpacing + faceSpacing), layer);
+            for (int k = 1; k < count[s]; ++k)
+                walls.add(points[s] + along * (static_cast<double>(k) / count[s]) - distance * faceNormal[s], faceNormal[s], faceSpacing, layer);
+        }
+    }
+    return walls;
+}
+
 WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, double offset) {
     const Vec<2> centre = patch.getVector<2>("centre");
     Vec<2> axes;
@@ -134,9 +169,10 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
     if constexpr (D == 2) {
         const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
         if (type == "polyline") return polyline(patch, dx, layers, offset);
+        if (type == "polygon") return polygon(patch, dx, layers, offset);
         if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
     }
-    const std::string valid = D == 2 ? "boxWalls, circle, ellipse, polyline" : "boxWalls";
+    const std::string valid = D == 2 ? "boxWalls, circle, ellipse, polygon, polyline" : "boxWalls";
     throw FatalError(patch.entry("type").tokens().front().where,
                      fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }

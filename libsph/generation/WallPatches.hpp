@@ -6,12 +6,15 @@
 //   {
 //       tank     { type boxWalls; min (0 0); max (1.6 0.8); layers 3; open (yMax); }  // 1D-3D
 //       ramp     { type polyline; points ((0 0) (1 0.5)); layers 3; side left; }     // 2D
+//       tank     { type polygon; points ((0 0) (4 0) (4 2) (0 2)); layers 1; firstLayerOffset 0; } // 2D, closed
 //       cylinder { type circle; centre (0.5 0.5); radius 0.1; layers 3; fluidInside no; }  // 2D
 //       bowl     { type ellipse; centre (0 0); semiAxes (2 1); layers 3; fluidInside yes; } // 2D
 //   }
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
 // included; the normal points to the nearest point of the box (diagonal in corners).
-// polyline's normal is on the `side` (left or right) of the direction of travel.
+// polyline's and polygon's normal is on the `side` (left or right) of the direction of travel;
+// a polygon (closed) has a particle on each vertex, its normal along the bisector, so a
+// counter-clockwise polygon with side left is a tank whose particle 0 sits on the first point.
 #pragma once
 
 #include "core/Vector.hpp"

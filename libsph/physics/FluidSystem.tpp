@@ -86,6 +86,7 @@ template <int D>
 void FluidSystem<D>::addWallForces(double t) {
     auto timer = timers.time(Stage::Boundary);
     if (keepsUncorrectedAcceleration_) fluid.vector("uncorrectedAcceleration") = fluid.vector("acceleration");
+    if (fluid.hasVector("boundaryCorrection")) std::fill(fluid.vector("boundaryCorrection").begin(), fluid.vector("boundaryCorrection").end(), Vec<D>::Zero());
     for (Patch<D>& patch : patches)
         if (patch.cells) patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
 }

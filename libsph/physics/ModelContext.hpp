@@ -4,6 +4,7 @@
 namespace sph {
 
 struct ModelContext {
+    double dx;         // particle spacing
     double h;          // smoothing length
     double c0;         // reference speed of sound
     double rho0;       // reference density

@@ -20,6 +20,9 @@ Weakly compressible SPH solver: runs an OpenFOAM-style case directory from its s
 Options:
   -case <dir>     case directory (default: the current directory)
   -listModels     list every selectable model with its coefficients, defaults and reference
+  -rates          evaluate the right-hand side once at the start time (accelerations, density
+                  rates, boundary corrections) and write it to postProcessing/rates/<time>/
+                  as .vtu and .csv
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
@@ -30,6 +33,7 @@ system/generateParticlesDict. See doc/userGuide.md.
 
 int main(int argc, char** argv) {
     std::string caseDirectory = ".";
+    sph::RunMode mode = sph::RunMode::TimeLoop;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-help" || arg == "--help" || arg == "-h") {
@@ -40,6 +44,10 @@ int main(int argc, char** argv) {
             fmt::print("{}", sph::modelCatalogue());
             return 0;
         }
+        if (arg == "-rates") {
+            mode = sph::RunMode::RatesOnly;
+            continue;
+        }
         if (arg == "-case" && i + 1 < argc) {
             caseDirectory = argv[++i];
             continue;
@@ -47,5 +55,5 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
     }
-    return sph::exitCodeOf([&] { sph::runCase(caseDirectory); });
+    return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode); });
 }
