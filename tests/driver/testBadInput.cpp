@@ -52,7 +52,14 @@ TEST(BadInput, UnknownModelListsTheValidNames) {
 TEST(BadInput, UnknownBoundaryModel) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "constant/boundaryProperties", "dummyParticles", "ghostParticles");
-    expectContains(failureOf(dir), "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    dummyParticles\n    dynamicBoundary");
+    expectContains(failureOf(dir), "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    deficiencyCorrection\n"
+                                   "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    monaghanKajtar");
+}
+
+TEST(BadInput, CorrectionWithoutRepulsionPartner) {
+    const auto dir = copyCase("rectangularTank2D");
+    writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; calibration literal; }\n");
+    expectContains(failureOf(dir), "error: patch 'boundaryProperties/tank': deficiencyCorrection needs a repulsion partner to stop penetration");
 }
 
 TEST(BadInput, NegativeOrZeroSpacing) {
