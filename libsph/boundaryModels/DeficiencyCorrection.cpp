@@ -108,15 +108,12 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, c
                     std::partial_sort(candidates.begin(), candidates.begin() + sampleSize_, candidates.end());
                     candidates.resize(static_cast<std::size_t>(sampleSize_));
                 }
-                double sum = 0.0;
-                int count = 0;
+                double numerator = 0.0, denominator = 0.0;
                 for (const auto& [r2, s] : candidates) {
-                    const double denominator = literal_ ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
-                    if (!(std::abs(denominator) > 1e-12 * kernel.value(0.0))) continue;
-                    sum += (uncorrected[s] - aWall[j]).dot(normal[j]) / denominator;
-                    ++count;
+                    numerator += (uncorrected[s] - aWall[j]).dot(normal[j]);
+                    denominator += literal_ ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
                 }
-                const double fresh = count > 0 ? sum / count : 0.0;
+                const double fresh = denominator > 1e-12 * kernel.value(0.0) ? numerator / denominator : 0.0;
                 C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
             }
             // Pass 3: the blended correction.

@@ -2,9 +2,13 @@
 // partner (Monaghan & Kajtar 2009 or Lennard-Jones) to stop penetration. Per evaluation:
 //  1. a_i^unc: the fluid acceleration of the force loop, without any wall force;
 //  2. per wall particle j, from a sample S_j of fluid particles near it:
-//       calibrated (default): C_j = mean_s ((a_s^unc - a_j) . n_j) / (c_s . n_j),
+//       calibrated (default): C_j = sum_s ((a_s^unc - a_j) . n_j) / sum_s (c_s . n_j),
 //                             c_s = sum_{k in Omega'_s} W(|r_sk|) wn_sk d_sk
-//       literal:              C_j = mean_s ((a_s^unc - a_j) . n_j) / W(|r_sj|)
+//       literal:              C_j = sum_s ((a_s^unc - a_j) . n_j) / sum_s W(|r_sj|)
+//     The paper averages the ratios; the ratio of the sums is the same for one sample (1D) or
+//     equal denominators (a straight wall), and does not divide by the near-zero c_s . n_j
+//     of a sample whose blend is dominated by another face (the corner of a hydrostatic tank
+//     blew up with the mean of ratios);
 //     optionally smoothed in time, C_j <- (1 - lambda) C_j + lambda C_j^new;
 //  3. a_i += -sum_{j in Omega'_i} C_j W(|r_ij|) wn_ij d_ij over wall particles within r_inf
 //     (the kernel support), d_ij = n_j (direction normal) or r_ij/|r_ij| (radial), wn_ij the
