@@ -80,7 +80,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
     const double endTime = controlDict.get<double>("endTime");
     const double writeInterval = controlDict.getPositive("writeInterval");
-    if (!(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
+    if (mode == RunMode::TimeLoop && !(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
     auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, start.time, setup.rho0);
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();

@@ -15,7 +15,7 @@ namespace {
 constexpr const char* faceNames[3][2] = {{"xMin", "xMax"}, {"yMin", "yMax"}, {"zMin", "zMax"}};
 
 template <int D>
-WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers) {
+WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, double offset) {
     const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
     std::array<int, D> counts;
     for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(patch, "max", lo[d], hi[d], dx);
@@ -53,7 +53,11 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers) {
                 skip = skip || open[dd][1];
             }
         }
-        if (depth > 0 && !skip) walls.add(x, (nearest - x).normalized(), dx, depth - 1);
+        if (depth > 0 && !skip) {
+            // The lattice puts the first layer dx/2 outside the box; shift along the normal for other offsets.
+            const Vec<D> normal = (nearest - x).normalized();
+            walls.add(x + (0.5 - offset) * dx * normal, normal, dx, depth - 1);
+        }
         int d = 0;
         for (; d < D; ++d) {
             const auto dd = static_cast<std::size_t>(d);
@@ -165,9 +169,9 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
     const std::string type = patch.get<std::string>("type");
     const int layers = patch.get<int>("layers");
     if (layers < 1) patch.fail("layers", fmt::format("must be at least 1, found {}", layers));
-    if (type == "boxWalls") return boxWalls<D>(patch, dx, layers);
+    const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
+    if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
     if constexpr (D == 2) {
-        const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
         if (type == "polyline") return polyline(patch, dx, layers, offset);
         if (type == "polygon") return polygon(patch, dx, layers, offset);
         if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);

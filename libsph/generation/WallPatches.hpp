@@ -11,7 +11,8 @@
 //       bowl     { type ellipse; centre (0 0); semiAxes (2 1); layers 3; fluidInside yes; } // 2D
 //   }
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
-// included; the normal points to the nearest point of the box (diagonal in corners).
+// included; the normal points to the nearest point of the box (diagonal in corners); a
+// firstLayerOffset other than 1/2 shifts every particle along its normal.
 // polyline's and polygon's normal is on the `side` (left or right) of the direction of travel;
 // a polygon (closed) has a particle on each vertex, its normal along the bisector, so a
 // counter-clockwise polygon with side left is a tank whose particle 0 sits on the first point.
