@@ -173,3 +173,27 @@ TEST(DeficiencyCorrection, NeedsARepulsionPartner) {
         EXPECT_STREQ(e.what(), "boundaryProperties:1:6: error: unknown repulsion 'hardWall'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar");
     }
 }
+
+TEST(DeficiencyCorrection, WorksIn3DOnAParticleSurfaceWithNormals) {
+    // A 3D floor: 30 x 30 wall particles at z = 0, a 30 x 30 x 8 block above; the weight uses
+    // only distances and normals, so the first layer's sampled deficiency cancels in 3D too.
+    const double h = 1.3 * dx;
+    std::vector<Vec<3>> fluid, walls;
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 30; ++j)
+            for (int i = 0; i < 30; ++i) fluid.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx));
+    for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 30; ++i) walls.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, 0.0));
+    const auto dict = dictionary("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 1; }");
+    auto s = system<3>(fluidSet<3>(fluid), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
+                       std::make_unique<DeficiencyCorrection<3, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
+                       Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
+    s.evaluateRates(0.0);
+    const std::size_t middle = 15 * 30 + 15;  // first layer, centre of the floor
+    const auto& before = s.fluid.vector("uncorrectedAcceleration");
+    const auto& correction = s.fluid.vector("boundaryCorrection");
+    ASSERT_LT(before[middle].z(), 0.0);
+    EXPECT_NEAR(before[middle].z() + correction[middle].z(), 0.0, 1e-12 * std::abs(before[middle].z()));
+    EXPECT_NEAR(correction[middle].x(), 0.0, 1e-12 * std::abs(before[middle].z()));
+    EXPECT_NEAR(correction[middle].y(), 0.0, 1e-12 * std::abs(before[middle].z()));
+}
