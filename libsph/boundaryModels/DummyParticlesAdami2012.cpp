@@ -18,7 +18,8 @@ std::string DummyParticlesAdami2012<D>::describe() const {
 
 template <int D>
 void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) {
-    const Vec<D> gravity = system.gravityAt(t);  // fixed walls: a_w = 0
+    const Vec<D> gravity = system.gravityAt(t);
+    const Vec<D>* aWall = system.walls.hasVector("acceleration") ? system.walls.vector("acceleration").data() : nullptr;  // none: fixed walls
     const Vec<D>* xFluid = system.fluid.position.data();
     const Vec<D>* vFluid = system.fluid.vector("velocity").data();
     const double* pFluid = system.fluid.scalar("pressure").data();
@@ -47,7 +48,8 @@ void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t
                     velocitySum += W * vFluid[f];
                 });
                 if (weight > 0.0) {
-                    pWall[w] = std::max((pressureSum + gravity.dot(densityMoment)) / weight, pMin);
+                    const Vec<D> relative = aWall ? Vec<D>(gravity - aWall[w]) : gravity;
+                    pWall[w] = std::max((pressureSum + relative.dot(densityMoment)) / weight, pMin);
                     const Vec<D> smoothed = velocitySum / weight;
                     if (vViscous) vViscous[w] = noSlip_ ? Vec<D>(2.0 * vWall[w] - smoothed) : smoothed;
                 } else {

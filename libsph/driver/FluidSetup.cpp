@@ -141,6 +141,11 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         begin = patch.end;
         patch.model = std::move(boundaryModels[p]);
         fmt::print("Selecting boundary model for patch {} ({} particles): {}\n", patch.name, patch.end - patch.begin, patch.model->describe());
+        const Dictionary& patchDict = boundaryDict.subDict(patch.name);
+        if (const Dictionary* motion = patchDict.findSubDict("motion")) {
+            patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
+            fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
+        }
         patches.push_back(std::move(patch));
     }
 

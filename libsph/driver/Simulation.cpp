@@ -81,6 +81,8 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
     const double endTime = controlDict.get<double>("endTime");
     const double writeInterval = controlDict.getPositive("writeInterval");
     if (mode == RunMode::TimeLoop && !(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
+    for (const Patch<D>& patch : system.patches)
+        if (patch.motion) patch.motion->checkCovers(start.time, endTime);
     auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, start.time, setup.rho0);
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();

@@ -2,7 +2,9 @@
 // integrator calls: from positions, velocities and densities to accelerations and density rates.
 //
 // One evaluation runs these stages; a stage with nothing selected costs nothing:
-//   1. neighbours   cell-linked list of the fluid (walls are indexed once, they do not move yet)
+//   0. wall motion  moving patches take their prescribed position, velocity, acceleration and
+//                   normal at t (normals and spacings recomputed on a deforming patch)
+//   1. neighbours   cell-linked list of the fluid (walls re-indexed only when they move)
 //   2. density      summation density (if selected), then pressure from the equation of state
 //   3. boundary     each wall-particle patch's model sets its particles' pressure, density,
 //                   velocity
@@ -22,6 +24,7 @@
 #include "densityDiffusion/DensityDiffusion.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
+#include "motion/PatchMotion.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "viscosity/Viscosity.hpp"
 
@@ -40,6 +43,7 @@ struct Patch {
     std::size_t begin = 0, end = 0;  // range in the wall particle set
     std::unique_ptr<BoundaryModel<D>> model;
     std::optional<CellLinkedList<D>> cells;  // the patch's particles, for wall-force models
+    std::unique_ptr<PatchMotion<D>> motion;  // prescribed motion; none for a fixed patch
 };
 
 template <int D>
@@ -90,6 +94,8 @@ private:
     void computeFluidPressure();
     void computeForces(const Vec<D>& gravity);
     void addWallForces(double t);
+    void moveWalls(double t);
+    void recomputeSurface(const Patch<D>& patch);
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;
@@ -98,6 +104,7 @@ private:
     double supportRadius_;
     bool wallDensityEvolves_ = false;
     bool keepsUncorrectedAcceleration_ = false;
+    bool wallsMove_ = false;
     std::size_t wallParticleEnd_ = 0;  // walls [0, wallParticleEnd_) enter the kernel sums
     CellLinkedList<D> fluidCells_;
     CellLinkedList<D> wallCells_;

@@ -38,7 +38,68 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     }
     if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0, false);
     if (keepsUncorrectedAcceleration_) fluid.addVector("uncorrectedAcceleration", Vec<D>::Zero());
+    for (const Patch<D>& patch : patches) wallsMove_ = wallsMove_ || patch.motion != nullptr;
+    if (wallsMove_) {
+        walls.addVector("initialPosition", Vec<D>::Zero(), false) = walls.position;
+        walls.addVector("initialNormal", Vec<D>::Zero(), false) = walls.vector("normal");
+        walls.addVector("acceleration", Vec<D>::Zero(), false);
+    }
     wallCells_.build(walls.position, 0, wallParticleEnd_);
+}
+
+template <int D>
+void FluidSystem<D>::moveWalls(double t) {
+    auto timer = timers.time(Stage::Boundary);
+    const auto& x0 = walls.vector("initialPosition");
+    const auto& n0 = walls.vector("initialNormal");
+    auto& velocity = walls.vector("velocity");
+    auto& acceleration = walls.vector("acceleration");
+    auto& normal = walls.vector("normal");
+    for (Patch<D>& patch : patches) {
+        if (!patch.motion) continue;
+        for (std::size_t w = patch.begin; w < patch.end; ++w) {
+            const Kinematics<D> k = patch.motion->at(x0[w], n0[w], t);
+            walls.position[w] = k.position;
+            velocity[w] = k.velocity;
+            acceleration[w] = k.acceleration;
+            normal[w] = patch.motion->normalAt(n0[w], t);
+        }
+        if (patch.motion->deforms()) recomputeSurface(patch);
+        if (patch.cells) patch.cells->build(walls.position, patch.begin, patch.end);
+    }
+    wallCells_.build(walls.position, 0, wallParticleEnd_);
+}
+
+template <int D>
+void FluidSystem<D>::recomputeSurface(const Patch<D>& patch) {
+    // 2D: the surface particles (layer 0) lie in order along the patch; the normal is the
+    // neighbours' chord turned by 90 degrees to the side of the initial normal, the spacing
+    // the mean distance to the neighbours. A closed curve wraps around.
+    if constexpr (D == 2) {
+        const auto& layer = walls.integer("layer");
+        auto& normal = walls.vector("normal");
+        auto& spacing = walls.scalar("spacing");
+        const auto& n0 = walls.vector("initialNormal");
+        std::vector<std::size_t> surface;
+        for (std::size_t w = patch.begin; w < patch.end; ++w)
+            if (layer[w] == 0) surface.push_back(w);
+        const std::size_t m = surface.size();
+        if (m < 3) return;
+        const auto& x = walls.position;
+        const bool closed = (x[surface.front()] - x[surface.back()]).norm() < 1.5 * spacing[surface.front()];
+        for (std::size_t k = 0; k < m; ++k) {
+            const bool first = k == 0, last = k + 1 == m;
+            const std::size_t previous = first ? (closed ? surface[m - 1] : surface[k]) : surface[k - 1];
+            const std::size_t next = last ? (closed ? surface[0] : surface[k]) : surface[k + 1];
+            const Vec<2> chord = x[next] - x[previous];
+            Vec<2> n(-chord.y(), chord.x());
+            n.normalize();
+            if (n.dot(n0[surface[k]]) < 0.0) n = -n;
+            normal[surface[k]] = n;
+            const double back = (x[surface[k]] - x[previous]).norm(), ahead = (x[next] - x[surface[k]]).norm();
+            spacing[surface[k]] = (previous == surface[k] || next == surface[k]) ? std::max(back, ahead) : 0.5 * (back + ahead);
+        }
+    }
 }
 
 template <int D>
@@ -61,6 +122,7 @@ void FluidSystem<D>::sortFluidByCell() {
 
 template <int D>
 void FluidSystem<D>::evaluateRates(double t) {
+    if (wallsMove_) moveWalls(t);
     {
         auto timer = timers.time(Stage::Neighbours);
         fluidCells_.build(fluid.position);

@@ -1,0 +1,45 @@
+// Prescribed motion of a wall patch, selected in the patch's entry of
+// constant/boundaryProperties:
+//   piston { type dummyParticles; motion { type oscillation; amplitude (0.05 0); frequency 1; } }
+// Every particle follows the motion of the material point where it started: position,
+// velocity and acceleration at time t. Rigid motions turn the normals with the patch; a
+// deformation moves particles by a displacement field, and the wall-force models' normals and
+// spacings are then recomputed from the moved surface (FluidSystem's boundary stage).
+#pragma once
+
+#include "core/Registry.hpp"
+#include "core/Vector.hpp"
+#include "io/Dictionary.hpp"
+
+#include <memory>
+#include <string>
+
+namespace sph {
+
+template <int D>
+struct Kinematics {
+    Vec<D> position, velocity, acceleration;
+};
+
+template <int D>
+class PatchMotion {
+public:
+    virtual ~PatchMotion() = default;
+    virtual std::string describe() const = 0;
+    // True when the patch changes shape (normals and spacings must be recomputed).
+    virtual bool deforms() const { return false; }
+    virtual Kinematics<D> at(const Vec<D>& initialPosition, const Vec<D>& initialNormal, double t) const = 0;
+    // The normal at t of a particle whose normal was n0 (rigid motions).
+    virtual Vec<D> normalAt(const Vec<D>& initialNormal, double /*t*/) const { return initialNormal; }
+    // FatalError when the motion is not defined over [startTime, endTime] (a table too short).
+    virtual void checkCovers(double /*startTime*/, double /*endTime*/) const {}
+};
+
+// Factory argument: the `motion` dictionary and the case directory (for tables).
+template <int D>
+using PatchMotionRegistry = Registry<std::unique_ptr<PatchMotion<D>>, const Dictionary&, const std::string&>;
+
+template <int D>
+PatchMotionRegistry<D> makePatchMotionRegistry();
+
+}  // namespace sph

@@ -1,0 +1,119 @@
+#include "core/FatalError.hpp"
+#include "motion/GaussianBulge.hpp"
+#include "motion/MotionTable.hpp"
+#include "motion/Oscillation.hpp"
+#include "motion/Rotation.hpp"
+#include "boundaryModels/RepulsiveWall.hpp"
+#include "physics/FluidSystem.hpp"
+#include "support/CaseFixture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+using namespace sph;
+
+namespace {
+
+Dictionary dictionary(const std::string& text) { return Dictionary::fromString(text, "motion"); }
+
+// Velocity and acceleration agree with central differences of the position.
+template <int D>
+void expectConsistentKinematics(const PatchMotion<D>& motion, const Vec<D>& x0, const Vec<D>& n0, double t) {
+    const double e = 1e-5;
+    const auto before = motion.at(x0, n0, t - e), now = motion.at(x0, n0, t), after = motion.at(x0, n0, t + e);
+    EXPECT_LT((now.velocity - (after.position - before.position) / (2 * e)).norm(), 1e-6 * (1 + now.velocity.norm()));
+    EXPECT_LT((now.acceleration - (after.velocity - before.velocity) / (2 * e)).norm(), 1e-5 * (1 + now.acceleration.norm()));
+}
+
+}  // namespace
+
+TEST(PatchMotion, OscillationIsASinusoid) {
+    const Oscillation<2> motion(dictionary("amplitude (0.1 0); frequency 0.5; phase 0;"));
+    const auto k = motion.at(Vec<2>(1, 2), Vec<2>(0, 1), 0.5);  // quarter period
+    EXPECT_NEAR((k.position - Vec<2>(1.1, 2)).norm(), 0.0, 1e-14);
+    EXPECT_NEAR(k.velocity.norm(), 0.0, 1e-14);
+    EXPECT_NEAR(k.acceleration.x(), -0.1 * std::numbers::pi * std::numbers::pi, 1e-12);
+    expectConsistentKinematics<2>(motion, Vec<2>(1, 2), Vec<2>(0, 1), 0.3);
+}
+
+TEST(PatchMotion, RotationTurnsPositionsAndNormals) {
+    const Rotation motion(dictionary("centre (0 0); omega 0.5; amplitude 0.2; frequency 1;"));
+    const double t = 1.0;  // theta = 0.5 + 0.2 sin(2 pi) = 0.5
+    const auto k = motion.at(Vec<2>(1, 0), Vec<2>(0, 1), t);
+    EXPECT_NEAR((k.position - Vec<2>(std::cos(0.5), std::sin(0.5))).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((motion.normalAt(Vec<2>(0, 1), t) - Vec<2>(-std::sin(0.5), std::cos(0.5))).norm(), 0.0, 1e-12);
+    expectConsistentKinematics<2>(motion, Vec<2>(1, 0.3), Vec<2>(0, 1), 0.37);
+}
+
+TEST(PatchMotion, GaussianBulgeMovesAlongTheNormalAndDeforms) {
+    const GaussianBulge<2> bulge(dictionary("centre (1 0); amplitude 0.1; width 0.2; period 2;"));
+    EXPECT_TRUE(bulge.deforms());
+    const auto top = bulge.at(Vec<2>(1, 0), Vec<2>(0, 1), 0.5);  // a quarter period: fully convex
+    EXPECT_NEAR((top.position - Vec<2>(1, 0.1)).norm(), 0.0, 1e-14);
+    const auto concave = bulge.at(Vec<2>(1, 0), Vec<2>(0, 1), 1.5);
+    EXPECT_NEAR(concave.position.y(), -0.1, 1e-14);
+    EXPECT_NEAR(bulge.at(Vec<2>(2, 0), Vec<2>(0, 1), 0.5).position.y(), 0.1 * std::exp(-25.0), 1e-15);
+    expectConsistentKinematics<2>(bulge, Vec<2>(1.1, 0), Vec<2>(0, 1), 0.8);
+}
+
+TEST(PatchMotion, TableInterpolatesAndMustCoverTheRun) {
+    const auto dir = test::freshDirectory();
+    test::writeFile(dir / "motion.csv", "# piston\nt,dx,dy\n0, 0, 0\n1, 0.1, 0\n2, 0.3, 0\n");
+    const MotionTable<2> table(dictionary("file \"motion.csv\";"), dir.string());
+    const auto k = table.at(Vec<2>(0, 0), Vec<2>(1, 0), 1.5);
+    EXPECT_NEAR(k.position.x(), 0.2, 1e-14);
+    EXPECT_NEAR(k.velocity.x(), 0.2, 1e-14);
+    EXPECT_NEAR(k.acceleration.x(), 0.1, 1e-12);  // slope 0.1 -> 0.2 between midpoints 0.5 and 1.5
+    EXPECT_NO_THROW(table.checkCovers(0.0, 2.0));
+    try {
+        table.checkCovers(0.0, 3.0);
+        FAIL() << "a table shorter than the run was accepted";
+    } catch (const FatalError& e) {
+        EXPECT_EQ(std::string(e.what()), "error: motion table '" + (dir / "motion.csv").string() + "' covers t from 0 to 2, but the run goes from 0 to 3");
+    }
+    test::writeFile(dir / "bad.csv", "0 0 0\n1 0.1\n");
+    EXPECT_THROW(MotionTable<2>(dictionary("file \"bad.csv\";"), dir.string()), FatalError);
+    test::writeFile(dir / "backwards.csv", "0 0 0\n1 0.1 0\n0.5 0.2 0\n");
+    try {
+        MotionTable<2>(dictionary("file \"backwards.csv\";"), dir.string());
+        FAIL();
+    } catch (const FatalError& e) {
+        EXPECT_NE(std::string(e.what()).find("line 3: time 0.5 does not increase"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PatchMotion, DeformingPatchRecomputesNormalsAndSpacings) {
+    // A straight wall of 41 particles on y = 0 bulging into the fluid: the normals tilt away
+    // from the bulge's centre on its flanks and stay vertical at its top.
+    ParticleSet<2> fluid("fluid");
+    fluid.resize(1);
+    fluid.position[0] = Vec<2>(1.0, 0.5);
+    fluid.addScalar("density", 1000.0);
+    fluid.addScalar("mass", 1.0);
+    fluid.addVector("velocity", Vec<2>::Zero());
+    ParticleSet<2> walls("walls");
+    walls.resize(41);
+    for (std::size_t k = 0; k < 41; ++k) walls.position[k] = Vec<2>(0.05 * k, 0.0);
+    walls.addScalar("mass", 1.0);
+    walls.addScalar("spacing", 0.05);
+    walls.addVector("normal", Vec<2>(0, 1));
+    walls.addInteger("patch", 0);
+    walls.addInteger("layer", 0);
+    std::vector<Patch<2>> patches(1);
+    patches[0].name = "floor";
+    patches[0].end = 41;
+    patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-9, 0.05, 0.0, 0.0});
+    patches[0].motion = std::make_unique<GaussianBulge<2>>(dictionary("centre (1 0); amplitude 0.2; width 0.3; period 4;"));
+    FluidModels<2> models{WendlandC2<2>(0.065), TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-1, -1), Vec<2>(3, 2), Vec<2>::Zero(), 0.0);
+    system.evaluateRates(1.0);  // full convex bulge
+    const auto& n = system.walls.vector("normal");
+    EXPECT_NEAR(system.walls.position[20].y(), 0.2, 1e-14);
+    EXPECT_NEAR(n[20].x(), 0.0, 1e-12);
+    EXPECT_LT(n[16].x(), -0.3);  // left flank leans left
+    EXPECT_GT(n[24].x(), 0.3);
+    EXPECT_GT(system.walls.scalar("spacing")[16], 0.05);  // stretched over the bulge
+    EXPECT_NEAR(system.walls.vector("velocity")[20].norm(), 0.0, 1e-12);
+}
