@@ -80,6 +80,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
     const double endTime = controlDict.get<double>("endTime");
     const double writeInterval = controlDict.getPositive("writeInterval");
+    const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
     if (mode == RunMode::TimeLoop && !(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
     for (const Patch<D>& patch : system.patches)
         if (patch.motion) patch.motion->checkCovers(start.time, endTime);
@@ -105,6 +106,10 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         auto timer = system.timers.time(Stage::Output);
         const std::string name = timeName(t);
         writeState(caseDirectory / name, t, step);
+        if (writeCsv) {
+            writeParticleCsv(caseDirectory / name / "fluid.csv", system.fluid);
+            writeParticleCsv(caseDirectory / name / "walls.csv", system.walls);
+        }
         pvd.add(t, {name + "/fluid.vtu", name + "/walls.vtu"});
     };
     if (mode == RunMode::RatesOnly) {
