@@ -197,3 +197,13 @@ TEST(DeficiencyCorrection, WorksIn3DOnAParticleSurfaceWithNormals) {
     EXPECT_NEAR(correction[middle].x(), 0.0, 1e-12 * std::abs(before[middle].z()));
     EXPECT_NEAR(correction[middle].y(), 0.0, 1e-12 * std::abs(before[middle].z()));
 }
+
+TEST(DeficiencyWeighting, HandComputedWeights) {
+    // A = 0.25/0.5, G = 1 (along the normal), D = 1 - 0.5/1: w = 0.25 + 1.5 * 0.5 = 1.
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 1.0), 1.0);
+    // Glancing at 90 degrees: G = 0, w = 0.25 + 0.5 * 0.5 = 0.5.
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<2>(0.5, Vec<2>(1, 0), Vec<2>(0, 1), 0.25, 1.0), 0.5);
+    // The boundary-integral weight is the particle's area: s in 2D, s^2 in 3D.
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 1.0), 0.25);
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<3>(0.5, Vec<3>(0, 0, 1), Vec<3>(0, 0, 1), 0.25, 1.0), 0.0625);
+}

@@ -62,6 +62,26 @@ TEST(BadInput, CorrectionWithoutRepulsionPartner) {
     expectContains(failureOf(dir), "error: patch 'boundaryProperties/tank': deficiencyCorrection needs a repulsion partner to stop penetration");
 }
 
+TEST(BadInput, PatchWithoutAModel) {
+    const auto dir = copyCase("damBreak2D");
+    writeFile(dir / "constant/boundaryProperties", "// no entry for the tank\n");
+    expectContains(failureOf(dir), "error: keyword 'tank' is missing from dictionary 'boundaryProperties'");
+}
+
+TEST(BadInput, CoincidentWallPointsHaveNoNormal) {
+    const auto dir = copyCase("deformingTank2D");
+    replaceInFile(dir / "system/generateParticlesDict", "points ((0 1) (0 0) (2 0) (2 1))", "points ((0 1) (0 0) (0 0) (2 1))");
+    expectContains(failureOf(dir), "error: keyword 'points' in dictionary 'generateParticlesDict/boundaries/tank': points 1 and 2 coincide");
+}
+
+TEST(BadInput, MotionTableShorterThanTheRun) {
+    const auto dir = copyCase("deformingTank2D");
+    writeFile(dir / "constant/motion.csv", "0 0 0\n1 0 0.01\n");
+    replaceInFile(dir / "constant/boundaryProperties", "motion      { type gaussianBulge; centre (1 0); amplitude 0.1; width 0.2; period 2; }",
+                  "motion      { type table; file \"constant/motion.csv\"; }");
+    expectContains(failureOf(dir), "motion.csv' covers t from 0 to 1, but the run goes from 0 to 2");
+}
+
 TEST(BadInput, NegativeOrZeroSpacing) {
     for (const std::string spacing : {"-0.00142875", "0"}) {
         const auto dir = copyCase("damBreak2D");
