@@ -65,6 +65,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         domainMin[d] = setup.header.domainMin[static_cast<std::size_t>(d)];
         domainMax[d] = setup.header.domainMax[static_cast<std::size_t>(d)];
     }
+    std::array<bool, D> periodic{};
+    for (std::size_t d = 0; d < setup.header.periodic.size() && d < static_cast<std::size_t>(D); ++d) periodic[d] = setup.header.periodic[d] != 0.0;
     for (std::size_t i = 0; i < fluid.size(); ++i)
         if ((fluid.position[i].array() < domainMin.array()).any() || (fluid.position[i].array() > domainMax.array()).any())
             throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({:g}) lies outside the domain [({:g}), ({:g})]", fluidFile.string(),
@@ -159,9 +161,15 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
                std::isfinite(setup.maxDeltaT) ? fmt::format(", maxDeltaT {:g}", setup.maxDeltaT) : "",
                setup.fixedDeltaT > 0.0 ? fmt::format(", fixedDeltaT {:g}", setup.fixedDeltaT) : "");
 
+    const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
+    for (int d = 0; d < D; ++d)
+        if (periodic[static_cast<std::size_t>(d)] && domainMax[d] - domainMin[d] < 3.0 * support)
+            throw FatalError(fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
+                                         "lengthen the domain or reduce hdx",
+                                         fluidFile.string(), "xyz"[d], domainMax[d] - domainMin[d], 3.0 * support));
     FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density};
     setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
-                                                    properties.gravity, properties.gravityRampTime);
+                                                    properties.gravity, properties.gravityRampTime, periodic);
     setup.dictionaries.push_back(std::move(schemes));
     setup.dictionaries.push_back(std::move(timeIntegration));
     setup.dictionaries.push_back(std::move(fluidDict));

@@ -149,6 +149,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         const double target = std::min(nextWrite, endTime);
         if (t + dt > target - timeTolerance) dt = target - t;
         setup.integrator->step(system, t, dt);
+        system.wrapPeriodic();
         t = (t + dt > target - timeTolerance) ? target : t + dt;
         ++step;
         checkState(system, step, t, setup.rho0);

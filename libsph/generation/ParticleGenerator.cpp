@@ -27,6 +27,16 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const Vec<D> lo = domain.getVector<D>("min"), hi = domain.getVector<D>("max");
     for (int d = 0; d < D; ++d)
         if (!(hi[d] > lo[d])) domain.fail("max", fmt::format("must exceed min in every direction (direction {}: {:g} <= {:g})", d, hi[d], lo[d]));
+    std::vector<double> periodic;
+    if (domain.found("periodic")) {
+        periodic.assign(static_cast<std::size_t>(D), 0.0);
+        for (const std::string& axis : domain.get<std::vector<std::string>>("periodic")) {
+            const auto at = std::string("xyz").substr(0, D).find(axis);
+            if (axis.size() != 1 || at == std::string::npos)
+                domain.fail("periodic", fmt::format("unknown direction '{}'; valid directions are: {}", axis, fmt::join(std::vector<std::string>{"x", "y", "z"}.begin(), std::vector<std::string>{"x", "y", "z"}.begin() + D, " ")));
+            periodic[at] = 1.0;
+        }
+    }
     const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
     if (initialPressure != "none" && initialPressure != "hydrostatic")
         dict.fail("initialPressure", "expected none or hydrostatic, found '" + initialPressure + "'");
@@ -128,6 +138,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     header.spacing = dx;
     header.domainMin.assign(lo.data(), lo.data() + D);
     header.domainMax.assign(hi.data(), hi.data() + D);
+    header.periodic = periodic;
     dict.checkUnused();
     std::filesystem::create_directories(outputDirectory);
     writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);

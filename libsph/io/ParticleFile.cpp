@@ -83,6 +83,7 @@ StateHeader headerOf(vtkUnstructuredGrid* grid, const std::filesystem::path& fil
     header.spacing = required("spacing", 1)[0];
     header.domainMin = required("domainMin", static_cast<std::size_t>(header.dimension));
     header.domainMax = required("domainMax", static_cast<std::size_t>(header.dimension));
+    header.periodic = numbers(data, "periodic");
     if (auto* names = vtkStringArray::SafeDownCast(data->GetAbstractArray("patchNames")))
         for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i) header.patchNames.push_back(names->GetValue(i));
     return header;
@@ -146,6 +147,7 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
     data->AddArray(fieldArray<vtkDoubleArray>("spacing", {header.spacing}));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMin", header.domainMin));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMax", header.domainMax));
+    if (!header.periodic.empty()) data->AddArray(fieldArray<vtkDoubleArray>("periodic", header.periodic));
     if (!header.patchNames.empty()) {
         auto names = vtkSmartPointer<vtkStringArray>::New();
         names->SetName("patchNames");

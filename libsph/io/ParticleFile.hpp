@@ -2,7 +2,8 @@
 // one vertex cell per particle, so ParaView opens them as they are and the solver restarts
 // from them exactly (every field is Float64). Point data: one array per written field,
 // 3-component arrays for vectors (zero-padded below 3D), "id" for global ids. Field data:
-// TimeValue, step, dimension, spacing, domainMin, domainMax and, for walls, patchNames.
+// TimeValue, step, dimension, spacing, domainMin, domainMax, periodic (when any direction is)
+// and, for walls, patchNames.
 // Files are written to a temporary name in the same directory and renamed, so a reader never
 // sees a half-written file.
 #pragma once
@@ -21,6 +22,7 @@ struct StateHeader {
     long step = 0;
     double spacing = 0.0;
     std::vector<double> domainMin, domainMax;
+    std::vector<double> periodic;  // 1 per periodic direction, 0 otherwise; empty: none
     std::vector<std::string> patchNames;
 };
 

@@ -6,14 +6,21 @@
 namespace sph {
 
 template <int D>
-CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double cellSize)
-    : lower_(lower), cellSize_(cellSize), inverseCellSize_(1.0 / cellSize) {
+CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double cellSize, const std::array<bool, D>& periodic)
+    : lower_(lower), extent_(upper - lower), cellSize_(cellSize), periodic_(periodic) {
     std::size_t cells = 1;
     for (int d = 0; d < D; ++d) {
-        const double extent = upper[d] - lower[d];
+        const auto dd = static_cast<std::size_t>(d);
+        const double extent = extent_[d];
         if (!(extent > 0.0)) throw std::invalid_argument("cell-linked list: empty domain");
-        const int n = std::max(1, static_cast<int>(std::ceil(extent / cellSize)));
-        dims_[static_cast<std::size_t>(d)] = n;
+        int n = std::max(1, static_cast<int>(std::ceil(extent / cellSize)));
+        if (periodic_[dd]) {
+            n = static_cast<int>(std::floor(extent / cellSize));  // cells no smaller than cellSize, tiling the period
+            if (n < 3) throw std::invalid_argument("cell-linked list: a periodic direction must be at least three support radii long");
+            anyPeriodic_ = true;
+        }
+        dims_[dd] = n;
+        inverseCellSizes_[d] = periodic_[dd] ? n / extent : 1.0 / cellSize;
         cells *= static_cast<std::size_t>(n);
     }
     cellStart_.assign(cells + 1, 0);

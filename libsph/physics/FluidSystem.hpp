@@ -61,7 +61,12 @@ public:
     // Takes the particle sets as read from the state files: the fluid set must hold velocity,
     // density and mass; the wall set position, normal, area, mass and patch, sorted by patch.
     FluidSystem(FluidModels<D> models, ParticleSet<D> fluid, ParticleSet<D> walls, std::vector<Patch<D>> patches,
-                const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime);
+                const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
+                const std::array<bool, D>& periodic = {});
+
+    // Brings fluid particles that crossed a periodic side back into the domain; call between steps.
+    void wrapPeriodic();
+    const std::array<bool, D>& periodic() const { return periodic_; }
 
     // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
     void evaluateRates(double t);
@@ -99,6 +104,7 @@ private:
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;
+    std::array<bool, D> periodic_;
     Vec<D> gravity_;
     double gravityRampTime_;
     double supportRadius_;

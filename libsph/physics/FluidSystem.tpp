@@ -11,11 +11,12 @@ namespace sph {
 
 template <int D>
 FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
-                            const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime)
+                            const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
+                            const std::array<bool, D>& periodic)
     : fluid(std::move(fluidSet)), walls(std::move(wallSet)), patches(std::move(patchList)), models_(std::move(models)),
-      domainMin_(domainMin), domainMax_(domainMax), gravity_(gravity), gravityRampTime_(gravityRampTime),
+      domainMin_(domainMin), domainMax_(domainMax), periodic_(periodic), gravity_(gravity), gravityRampTime_(gravityRampTime),
       supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
-      fluidCells_(domainMin, domainMax, supportRadius_), wallCells_(domainMin, domainMax, supportRadius_) {
+      fluidCells_(domainMin, domainMax, supportRadius_, periodic), wallCells_(domainMin, domainMax, supportRadius_, periodic) {
     fluid.addScalar("pressure", 0.0);
     fluid.addVector("acceleration", Vec<D>::Zero());
     if (continuity()) fluid.addScalar("densityRate", 0.0, false);
@@ -29,7 +30,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
             if (wallParticleEnd_ != patch.begin) throw std::logic_error("wall-particle patches must precede wall-force patches");
             wallParticleEnd_ = patch.end;
         } else {
-            patch.cells.emplace(domainMin, domainMax, supportRadius_);
+            patch.cells.emplace(domainMin, domainMax, supportRadius_, periodic);
             patch.cells->build(walls.position, patch.begin, patch.end);
         }
         wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
@@ -45,6 +46,15 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         walls.addVector("acceleration", Vec<D>::Zero(), false);
     }
     wallCells_.build(walls.position, 0, wallParticleEnd_);
+}
+
+template <int D>
+void FluidSystem<D>::wrapPeriodic() {
+    for (int d = 0; d < D; ++d) {
+        if (!periodic_[static_cast<std::size_t>(d)]) continue;
+        const double lower = domainMin_[d], extent = domainMax_[d] - domainMin_[d];
+        for (Vec<D>& x : fluid.position) x[d] = lower + (x[d] - lower) - extent * std::floor((x[d] - lower) / extent);
+    }
 }
 
 template <int D>

@@ -61,3 +61,33 @@ TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
     const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<int>(p.y() * 10) * 10 + static_cast<int>(p.x() * 10); };
     for (std::size_t k = 1; k < order.size(); ++k) EXPECT_LE(cellOf(points[order[k - 1]]), cellOf(points[order[k]]));
 }
+
+TEST(CellLinkedList, PeriodicDirectionsFindNearestImages) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::vector<sph::Vec<2>> points(1500);
+    for (auto& p : points) p = {coordinate(random), 0.5 * coordinate(random)};
+    const double radius = 0.07;
+    sph::CellLinkedList<2> cells(sph::Vec<2>(0, 0), sph::Vec<2>(1, 0.5), radius, {true, false});
+    cells.build(points);
+    std::size_t acrossTheSeam = 0;
+    for (const auto& x : points) {
+        std::vector<std::uint32_t> found, expected;
+        cells.forEachNeighbour(x, radius, [&](std::uint32_t j, const sph::Vec<2>& r, double) {
+            found.push_back(j);
+            if (std::abs(r.x()) < std::abs(x.x() - points[j].x())) ++acrossTheSeam;
+        });
+        for (std::uint32_t j = 0; j < points.size(); ++j) {
+            sph::Vec<2> r = x - points[j];
+            r.x() -= std::round(r.x());  // period 1 in x
+            if (r.squaredNorm() < radius * radius) expected.push_back(j);
+        }
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, expected);
+    }
+    EXPECT_GT(acrossTheSeam, 0u);
+}
+
+TEST(CellLinkedList, PeriodicDirectionShorterThanThreeCellsIsRejected) {
+    EXPECT_THROW(sph::CellLinkedList<2>(sph::Vec<2>(0, 0), sph::Vec<2>(0.25, 1), 0.1, {true, false}), std::invalid_argument);
+}

@@ -126,3 +126,27 @@ TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
         }
 }
 
+
+TEST(FluidRates, FullyPeriodicLatticeHasNoEdges) {
+    // Periodic in both directions, uniform pressure: every particle has full support.
+    ParticleSet<2> fluid("fluid");
+    fluid.resize(n * n);
+    fluid.addScalar("density", 1000.0);
+    fluid.addScalar("mass", 1000.0 * dx * dx);
+    fluid.addVector("velocity", Vec<2>::Zero());
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) fluid.position[static_cast<std::size_t>(j * n + i)] = {(i + 0.5) * dx, (j + 0.5) * dx};
+    ParticleSet<2> walls("walls");
+    walls.addScalar("mass", 0.0);
+    FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 10.0, 7.0, 1e4), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(0, 0), Vec<2>(n * dx, n * dx), Vec<2>::Zero(), 0.0,
+                          {true, true});
+    system.evaluateRates(0.0);
+    for (const Vec<2>& a : system.fluid.vector("acceleration")) ASSERT_LT(a.norm(), 1e-12 * 1e4 / 1000.0 / dx);
+    // A particle pushed across a side comes back through the opposite one.
+    system.fluid.position[0] = Vec<2>(-0.3 * dx, n * dx + 0.2 * dx);
+    system.wrapPeriodic();
+    EXPECT_NEAR(system.fluid.position[0].x(), (n - 0.3) * dx, 1e-12);
+    EXPECT_NEAR(system.fluid.position[0].y(), 0.2 * dx, 1e-12);
+}
