@@ -37,19 +37,22 @@ std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSys
     const double* m = system.fluid.scalar("mass").data();
     const double* rho = system.fluid.scalar("density").data();
     const double* p = system.fluid.scalar("pressure").data();
+    const Vec<D>* v = system.fluid.vector("velocity").data();
     std::visit(
         [&](const auto& kernel) {
             for (int s = 0; s < points_; ++s) {
                 const Vec<D> x = start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1));
                 double weight = 0.0, pressure = 0.0, density = 0.0;
+                Vec<D> velocity = Vec<D>::Zero();
                 system.fluidCells().forEachNeighbour(x, system.supportRadius(), [&](std::uint32_t j, const Vec<D>&, double r2) {
                     const double w = kernel.value(std::sqrt(r2)) * m[j] / rho[j];
                     weight += w;
                     pressure += w * p[j];
                     density += w * rho[j];
+                    velocity += w * v[j];
                 });
                 const double inverse = weight > 0.0 ? 1.0 / weight : 0.0;
-                samples[static_cast<std::size_t>(s)] = {x, pressure * inverse, density * inverse};
+                samples[static_cast<std::size_t>(s)] = {x, pressure * inverse, density * inverse, velocity * inverse};
             }
         },
         system.models().kernel);
@@ -62,12 +65,13 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
     const Vec<D> g = system.gravityAt(t);
     const double gravity = g.norm();
     const Vec<D> up = gravity > 0.0 ? Vec<D>(-g / gravity) : Vec<D>::Zero();
-    std::string csv = freeSurfaceHeight_ ? "distance,x,y,z,p,rho,p_ref\n" : "distance,x,y,z,p,rho\n";
+    std::string csv = freeSurfaceHeight_ ? "distance,x,y,z,p,rho,Ux,Uy,Uz,p_ref\n" : "distance,x,y,z,p,rho,Ux,Uy,Uz\n";
     double sum2 = 0.0, maxError = 0.0;
     for (const Sample& s : samples) {
         csv += fmt::format("{:.9g}", (s.position - start_).norm());
         for (int d = 0; d < 3; ++d) csv += fmt::format(",{:.9g}", d < D ? s.position[d] : 0.0);
         csv += fmt::format(",{:.9g},{:.9g}", s.pressure, s.density);
+        for (int d = 0; d < 3; ++d) csv += fmt::format(",{:.9g}", d < D ? s.velocity[d] : 0.0);
         if (freeSurfaceHeight_) {
             const double reference = rho0_ * gravity * (*freeSurfaceHeight_ - s.position.dot(up));
             csv += fmt::format(",{:.9g}", reference);

@@ -1,7 +1,7 @@
-// lineSample: pressure and density along a line, interpolated from the fluid particles with
+// lineSample: pressure, density and velocity along a line, interpolated from the fluid particles with
 // the Shepard-normalised kernel sum  f(x) = sum_j f_j W(x - x_j) V_j / sum_j W(x - x_j) V_j,
 // V_j = m_j/rho_j. Each execution writes postProcessing/<name>/<t0>/<time>/line.csv
-// (distance, position, p, rho[, p_ref]). With a hydrostaticReference it compares p with
+// (distance, position, p, rho, velocity[, p_ref]). With a hydrostaticReference it compares p with
 // rho0 |g| (H - z), z measured against gravity, and appends to error.dat the L2 and max
 // error over the samples, normalised by rho0 |g| H.
 // Example (system/controlDict, functions):
@@ -32,6 +32,7 @@ public:
     struct Sample {
         Vec<D> position;
         double pressure, density;
+        Vec<D> velocity;
     };
     // Interpolated values at the points (exposed for tests).
     std::vector<Sample> sample(const FluidSystem<D>& system) const;
