@@ -69,12 +69,17 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
     return walls;
 }
 
+// +1 when the normal is on the left of the direction of travel, -1 on the right.
+double sideSign(const Dictionary& patch) {
+    const std::string side = patch.getOrDefault<std::string>("side", "left");
+    if (side != "left" && side != "right") patch.fail("side", "expected left or right, found '" + side + "'");
+    return side == "left" ? 1.0 : -1.0;
+}
+
 WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = readPointList(patch, "points");
     if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
-    const std::string side = patch.getOrDefault<std::string>("side", "left");
-    if (side != "left" && side != "right") patch.fail("side", "expected left or right, found '" + side + "'");
-    const double sign = side == "left" ? 1.0 : -1.0;
+    const double sign = sideSign(patch);
     WallPatchParticles<2> walls;
     for (std::size_t s = 0; s + 1 < points.size(); ++s) {
         const Vec<2> along = points[s + 1] - points[s];
@@ -95,9 +100,7 @@ WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, d
 WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = readPointList(patch, "points");
     if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
-    const std::string side = patch.getOrDefault<std::string>("side", "left");
-    if (side != "left" && side != "right") patch.fail("side", "expected left or right, found '" + side + "'");
-    const double sign = side == "left" ? 1.0 : -1.0;
+    const double sign = sideSign(patch);
     const std::size_t m = points.size();
     std::vector<Vec<2>> faceNormal(m);
     std::vector<int> count(m);

@@ -58,6 +58,21 @@ FluidSystem<D> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_pt
 
 Dictionary dictionary(const std::string& text) { return Dictionary::fromString(text, "boundaryProperties"); }
 
+// A wall of 200 particles along y = 0 under a 200 x 20 block at uniform pressure, evaluated once.
+template <class Weighting>
+FluidSystem<2> straightWall(const std::string& type) {
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> fluid, walls;
+    for (int j = 0; j < 20; ++j)
+        for (int i = 0; i < 200; ++i) fluid.push_back(Vec<2>((i + 0.5) * dx, (j + 0.5) * dx));
+    for (int i = 0; i < 200; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
+    const auto dict = dictionary("type " + type + "; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 2; }");
+    auto s = system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                       std::make_unique<DeficiencyCorrection<2, Weighting>>(dict, contextFor(h), type), h, Vec<2>(-1, -1), Vec<2>(11, 2));
+    s.evaluateRates(0.0);
+    return s;
+}
+
 }  // namespace
 
 TEST(MonaghanKajtar2009, HandComputedForceOnOneParticle) {
@@ -123,16 +138,7 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
 TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstRow) {
     // A wall of 200 particles along y = 0 under a 200 x 20 block; in the middle every C_j is
     // equal, and the calibrated reading cancels the sampled (first-row) deficiency.
-    const double h = 1.3 * dx;
-    std::vector<Vec<2>> fluid, walls;
-    for (int j = 0; j < 20; ++j)
-        for (int i = 0; i < 200; ++i) fluid.push_back(Vec<2>((i + 0.5) * dx, (j + 0.5) * dx));
-    for (int i = 0; i < 200; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
-    const auto dict = dictionary("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 2; }");
-    auto s = system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
-                       std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
-                       Vec<2>(-1, -1), Vec<2>(11, 2));
-    s.evaluateRates(0.0);
+    auto s = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
     const auto& before = s.fluid.vector("uncorrectedAcceleration");
     const auto& correction = s.fluid.vector("boundaryCorrection");
     const double deficiency = std::abs(before[100].y());
@@ -144,16 +150,7 @@ TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstR
 }
 
 TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) {
-    const double h = 1.3 * dx;
-    std::vector<Vec<2>> fluid, walls;
-    for (int j = 0; j < 20; ++j)
-        for (int i = 0; i < 200; ++i) fluid.push_back(Vec<2>((i + 0.5) * dx, (j + 0.5) * dx));
-    for (int i = 0; i < 200; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
-    const auto dict = dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 2; }");
-    auto s = system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
-                       std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(dict, contextFor(h), "boundaryIntegral"), h,
-                       Vec<2>(-1, -1), Vec<2>(11, 2));
-    s.evaluateRates(0.0);
+    auto s = straightWall<DeficiencyWeightingBoundaryIntegral>("deficiencyCorrectionBoundaryIntegral");
     const auto& before = s.fluid.vector("uncorrectedAcceleration");
     const auto& correction = s.fluid.vector("boundaryCorrection");
     EXPECT_NEAR(before[100].y() + correction[100].y(), 0.0, 1e-12 * std::abs(before[100].y()));
