@@ -68,6 +68,10 @@ public:
     void wrapPeriodic();
     const std::array<bool, D>& periodic() const { return periodic_; }
 
+    // The cell lists refer to the particle arrays of this object: it never moves.
+    FluidSystem(const FluidSystem&) = delete;
+    FluidSystem& operator=(const FluidSystem&) = delete;
+
     // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
     void evaluateRates(double t);
 

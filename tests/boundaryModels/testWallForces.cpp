@@ -44,7 +44,7 @@ ParticleSet<D> fluidSet(const std::vector<Vec<D>>& positions) {
 
 // Uniform pressure 1 (linear EOS with background pressure 1), no gravity, cubic spline.
 template <int D>
-FluidSystem<D> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_ptr<BoundaryModel<D>> model, double h, const Vec<D>& lo,
+std::unique_ptr<FluidSystem<D>> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_ptr<BoundaryModel<D>> model, double h, const Vec<D>& lo,
                       const Vec<D>& hi) {
     std::vector<Patch<D>> patches(1);
     patches[0].name = "wall";
@@ -53,14 +53,14 @@ FluidSystem<D> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_pt
     patches[0].model = std::move(model);
     FluidModels<D> models{CubicSplineMonaghanLattanzio1985<D>(h), LinearEquationOfState(rho0, 10.0, 1.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
-    return FluidSystem<D>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), lo, hi, Vec<D>::Zero(), 0.0);
+    return std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), lo, hi, Vec<D>::Zero(), 0.0);
 }
 
 Dictionary dictionary(const std::string& text) { return Dictionary::fromString(text, "boundaryProperties"); }
 
 // A wall of 200 particles along y = 0 under a 200 x 20 block at uniform pressure, evaluated once.
 template <class Weighting>
-FluidSystem<2> straightWall(const std::string& type) {
+std::unique_ptr<FluidSystem<2>> straightWall(const std::string& type) {
     const double h = 1.3 * dx;
     std::vector<Vec<2>> fluid, walls;
     for (int j = 0; j < 20; ++j)
@@ -69,7 +69,7 @@ FluidSystem<2> straightWall(const std::string& type) {
     const auto dict = dictionary("type " + type + "; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 2; }");
     auto s = system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
                        std::make_unique<DeficiencyCorrection<2, Weighting>>(dict, contextFor(h), type), h, Vec<2>(-1, -1), Vec<2>(11, 2));
-    s.evaluateRates(0.0);
+    s->evaluateRates(0.0);
     return s;
 }
 
@@ -79,9 +79,10 @@ TEST(MonaghanKajtar2009, HandComputedForceOnOneParticle) {
     const double h = 1.3 * dx;
     const Vec<2> wall(0.0, 0.0), particle(0.01, 0.03);
     const double spacing = 0.025;  // beta = dx / s = 2
-    auto s = system<2>(fluidSet<2>({particle}), wallSet<2>({wall}, Vec<2>(0, 1), spacing),
+    auto owner = system<2>(fluidSet<2>({particle}), wallSet<2>({wall}, Vec<2>(0, 1), spacing),
                        std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 3;"), contextFor(h))), h,
                        Vec<2>(-1, -1), Vec<2>(1, 1));
+    auto& s = *owner;
     s.evaluateRates(0.0);
     const CubicSplineMonaghanLattanzio1985<2> kernel(h);
     const Vec<2> r = particle - wall;
@@ -114,9 +115,10 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
     for (const char* calibration : {"calibrated", "literal"}) {
         const auto dict = dictionary(std::string("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 1; } calibration ") +
                                      calibration + ";");
-        auto s = system<1>(fluidSet<1>(positions), wallSet<1>({Vec<1>(0.0)}, Vec<1>(1.0), dx),
+        auto owner = system<1>(fluidSet<1>(positions), wallSet<1>({Vec<1>(0.0)}, Vec<1>(1.0), dx),
                            std::make_unique<DeficiencyCorrection<1, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
                            Vec<1>(-1.0), Vec<1>(3.0));
+        auto& s = *owner;
         s.evaluateRates(0.0);
         const auto& before = s.fluid.vector("uncorrectedAcceleration");
         const auto& correction = s.fluid.vector("boundaryCorrection");
@@ -138,7 +140,8 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
 TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstRow) {
     // A wall of 200 particles along y = 0 under a 200 x 20 block; in the middle every C_j is
     // equal, and the calibrated reading cancels the sampled (first-row) deficiency.
-    auto s = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
+    auto system = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
+    auto& s = *system;
     const auto& before = s.fluid.vector("uncorrectedAcceleration");
     const auto& correction = s.fluid.vector("boundaryCorrection");
     const double deficiency = std::abs(before[100].y());
@@ -150,7 +153,8 @@ TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstR
 }
 
 TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) {
-    auto s = straightWall<DeficiencyWeightingBoundaryIntegral>("deficiencyCorrectionBoundaryIntegral");
+    auto system = straightWall<DeficiencyWeightingBoundaryIntegral>("deficiencyCorrectionBoundaryIntegral");
+    auto& s = *system;
     const auto& before = s.fluid.vector("uncorrectedAcceleration");
     const auto& correction = s.fluid.vector("boundaryCorrection");
     EXPECT_NEAR(before[100].y() + correction[100].y(), 0.0, 1e-12 * std::abs(before[100].y()));
@@ -182,9 +186,10 @@ TEST(DeficiencyCorrection, WorksIn3DOnAParticleSurfaceWithNormals) {
     for (int j = 0; j < 30; ++j)
         for (int i = 0; i < 30; ++i) walls.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, 0.0));
     const auto dict = dictionary("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 1; }");
-    auto s = system<3>(fluidSet<3>(fluid), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
+    auto owner = system<3>(fluidSet<3>(fluid), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
                        std::make_unique<DeficiencyCorrection<3, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
                        Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
+    auto& s = *owner;
     s.evaluateRates(0.0);
     const std::size_t middle = 15 * 30 + 15;  // first layer, centre of the floor
     const auto& before = s.fluid.vector("uncorrectedAcceleration");
