@@ -147,6 +147,9 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         if (const Dictionary* motion = patchDict.findSubDict("motion")) {
             patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
             fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
+            if (patch.motion->isFree() && patch.model->actsThroughWallParticles())
+                motion->fail("type", "a free body takes its loads from a wall-force model (monaghanKajtar, lennardJones, deficiencyCorrection, "
+                                     "deficiencyCorrectionBoundaryIntegral); patch '" + patch.name + "' uses " + patch.model->describe());
         }
         patches.push_back(std::move(patch));
     }

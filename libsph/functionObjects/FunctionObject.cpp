@@ -1,5 +1,6 @@
 #include "functionObjects/FunctionObject.hpp"
 
+#include "functionObjects/BodyMotion.hpp"
 #include "functionObjects/LineSample.hpp"
 #include "functionObjects/SurgeFront.hpp"
 
@@ -19,6 +20,10 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                                  {"hydrostaticReference", "none", "{ freeSurfaceHeight H; }: error against rho0 |g| (H - z)"}, interval}},
                  [](const Dictionary& dict, const FunctionObjectContext& context) -> std::unique_ptr<FunctionObject<D>> {
                      return std::make_unique<LineSample<D>>(dict, context);
+                 });
+    registry.add("bodyMotion", {"position, angle, velocities and fluid loads of a free body (2D)", "", {{"patch", "", "the body's patch"}, interval}},
+                 [](const Dictionary& dict, const FunctionObjectContext& context) -> std::unique_ptr<FunctionObject<D>> {
+                     return std::make_unique<BodyMotion<D>>(dict, context);
                  });
     return registry;
 }

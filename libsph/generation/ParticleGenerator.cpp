@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace sph {
 
@@ -52,6 +54,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const Dictionary* boundaries = dict.findSubDict("boundaries");
     WallPatchParticles<D> allWalls;
     std::vector<int> patchOf;
+    std::vector<std::function<bool(const Vec<D>&)>> solids;
     if (boundaries) {
         for (const std::string& name : boundaries->keywords()) {
             const Dictionary& patch = boundaries->subDict(name);
@@ -64,6 +67,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
                 patchOf.push_back(static_cast<int>(patchNames.size()));
             }
             patchNames.push_back(name);
+            if (generated.solid) solids.push_back(generated.solid);
         }
     }
     CellLinkedList<D> wallCells(lo, hi, dx);
@@ -84,8 +88,9 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
             if (!insideDomain<D>(x, lo, hi))
                 throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
                                                              fmt::join(x, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
-            bool overlapsWall = false;
-            wallCells.forEachNeighbour(x, 0.5 * dx * (1.0 - 1e-9), [&](std::uint32_t, const Vec<D>&, double) { overlapsWall = true; });
+            bool overlapsWall = std::any_of(solids.begin(), solids.end(), [&](const auto& solid) { return solid(x); });
+            if (!overlapsWall)
+                wallCells.forEachNeighbour(x, 0.5 * dx * (1.0 - 1e-9), [&](std::uint32_t, const Vec<D>&, double) { overlapsWall = true; });
             if (overlapsWall) {
                 ++dropped;
                 continue;

@@ -8,7 +8,8 @@
 //                                                 // H the top of each fluid region
 //   fluid      { <name> { type box; ... } ... }    // see FluidRegions.hpp
 //   boundaries { <patch> { type boxWalls; ... } ... }  // see WallPatches.hpp
-// Fluid particles closer than dx/2 to a wall particle are dropped. Mass is rho0 dx^D.
+// Fluid particles closer than dx/2 to a wall particle, or inside an obstacle, are dropped.
+// Mass is rho0 dx^D.
 #pragma once
 
 #include <filesystem>

@@ -162,6 +162,10 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
             walls.add(centre + onCurve - distance * intoFluid, intoFluid, layerPerimeter / n, layer);
         }
     }
+    if (!fluidInside)
+        walls.solid = [centre, axes](const Vec<2>& x) {
+            return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
+        };
     return walls;
 }
 

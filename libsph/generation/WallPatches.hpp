@@ -13,6 +13,7 @@
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
 // included; the normal points to the nearest point of the box (diagonal in corners); a
 // firstLayerOffset other than 1/2 shifts every particle along its normal.
+// A circle or ellipse with fluidInside no is an obstacle: fluid regions leave out its inside.
 // polyline's and polygon's normal is on the `side` (left or right) of the direction of travel;
 // a polygon (closed) has a particle on each vertex, its normal along the bisector, so a
 // counter-clockwise polygon with side left is a tank whose particle 0 sits on the first point.
@@ -21,6 +22,7 @@
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace sph {
@@ -31,6 +33,8 @@ struct WallPatchParticles {
     std::vector<Vec<D>> normals;
     std::vector<double> spacings;
     std::vector<int> layers;
+    // For an obstacle (a closed curve with the fluid outside): true inside it, where no fluid goes.
+    std::function<bool(const Vec<D>&)> solid;
 
     void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer) {
         positions.push_back(x);

@@ -1,5 +1,6 @@
 #include "motion/PatchMotion.hpp"
 
+#include "motion/FreeBody2D.hpp"
 #include "motion/GaussianBulge.hpp"
 #include "motion/MotionTable.hpp"
 #include "motion/Oscillation.hpp"
@@ -27,6 +28,13 @@ PatchMotionRegistry<D> makePatchMotionRegistry() {
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<GaussianBulge<D>>(dict); });
     registry.add("table", {"rigid translation interpolated from a file of rows t dx dy [dz]", "", {{"file", "", "relative to the case"}}},
                  [](const Dictionary& dict, const std::string& caseDirectory) -> Made { return std::make_unique<MotionTable<D>>(dict, caseDirectory); });
+    registry.add("freeBody", {"2D rigid body moved by the fluid force and gravity (wall-force models only)", "",
+                              {{"mass", "", "M"}, {"momentOfInertia", "", "I about the centre of mass"}, {"centreOfMass", "", "initial X"},
+                               {"velocity", "(0 0)", "initial V"}, {"angularVelocity", "0", "initial omega"}}},
+                 [](const Dictionary& dict, const std::string&) -> Made {
+                     if constexpr (D == 2) return std::make_unique<FreeBody2D>(dict);
+                     dict.fail("type", "freeBody is implemented for 2D cases only");
+                 });
     return registry;
 }
 

@@ -33,6 +33,13 @@ public:
     virtual Vec<D> normalAt(const Vec<D>& initialNormal, double /*t*/) const { return initialNormal; }
     // FatalError when the motion is not defined over [startTime, endTime] (a table too short).
     virtual void checkCovers(double /*startTime*/, double /*endTime*/) const {}
+
+    // A free body's motion is integrated with the fluid from the loads the fluid exerts; a
+    // prescribed motion ignores these.
+    virtual bool isFree() const { return false; }
+    virtual void setLoads(const Vec<D>& /*force*/, double /*torque*/, const Vec<D>& /*gravity*/, double /*t*/) {}
+    virtual void predict(double /*halfDt*/) {}
+    virtual void correct(double /*dt*/) {}
 };
 
 // Factory argument: the `motion` dictionary and the case directory (for tables).

@@ -64,6 +64,10 @@ public:
                 const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
                 const std::array<bool, D>& periodic = {});
 
+    // Free bodies: the integrator advances them with the fluid (see FreeBody2D).
+    void predictBodies(double halfDt);
+    void correctBodies(double dt);
+
     // Brings fluid particles that crossed a periodic side back into the domain; call between steps.
     void wrapPeriodic();
     const std::array<bool, D>& periodic() const { return periodic_; }
@@ -105,6 +109,7 @@ private:
     void addWallForces(double t);
     void moveWalls(double t);
     void recomputeSurface(const Patch<D>& patch);
+    Vec<D> bodyCentre(const Patch<D>& patch) const;
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;

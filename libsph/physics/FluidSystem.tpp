@@ -1,6 +1,7 @@
 // Implementation of FluidSystem<D>, included once per dimension by FluidSystem<D>.cpp so the
 // hot loops of each dimension compile in parallel.
 #include "physics/FluidSystem.hpp"
+#include "motion/FreeBody2D.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -159,8 +160,47 @@ void FluidSystem<D>::addWallForces(double t) {
     auto timer = timers.time(Stage::Boundary);
     if (keepsUncorrectedAcceleration_) fluid.vector("uncorrectedAcceleration") = fluid.vector("acceleration");
     if (fluid.hasVector("boundaryCorrection")) std::fill(fluid.vector("boundaryCorrection").begin(), fluid.vector("boundaryCorrection").end(), Vec<D>::Zero());
+    auto& acceleration = fluid.vector("acceleration");
+    for (Patch<D>& patch : patches) {
+        if (!patch.cells) continue;
+        const bool free = patch.motion && patch.motion->isFree();
+        std::vector<Vec<D>> before;
+        if (free) before = acceleration;
+        patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
+        if (!free) continue;
+        // The body takes the reaction of what its patch added to the fluid.
+        Vec<D> force = Vec<D>::Zero();
+        double torque = 0.0;
+        const Vec<D> centreOfMass = bodyCentre(patch);
+        const double* m = fluid.scalar("mass").data();
+        for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
+            const Vec<D> f = -m[i] * (acceleration[i] - before[i]);
+            force += f;
+            if constexpr (D == 2) torque += (fluid.position[i] - centreOfMass).x() * f.y() - (fluid.position[i] - centreOfMass).y() * f.x();
+        }
+        patch.motion->setLoads(force, torque, gravityAt(t), t);
+    }
+}
+
+template <int D>
+Vec<D> FluidSystem<D>::bodyCentre(const Patch<D>& patch) const {
+    // The image of the initial centre of mass under the body's current rigid motion.
+    if constexpr (D == 2) {
+        if (const auto* body = dynamic_cast<const FreeBody2D*>(patch.motion.get())) return body->state().position;
+    }
+    return Vec<D>::Zero();
+}
+
+template <int D>
+void FluidSystem<D>::predictBodies(double halfDt) {
     for (Patch<D>& patch : patches)
-        if (patch.cells) patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
+        if (patch.motion && patch.motion->isFree()) patch.motion->predict(halfDt);
+}
+
+template <int D>
+void FluidSystem<D>::correctBodies(double dt) {
+    for (Patch<D>& patch : patches)
+        if (patch.motion && patch.motion->isFree()) patch.motion->correct(dt);
 }
 
 template <int D>

@@ -44,6 +44,7 @@ void SymplecticPositionVerlet<D>::step(FluidSystem<D>& system, double t, double 
             rho0_ = fluid.scalar("density");
             predictDensity(fluid.scalar("density"), fluid.scalar("densityRate"), halfDt, n);
         }
+        system.predictBodies(halfDt);
         if (system.wallDensityEvolves()) {
             wallRho0_ = system.walls.scalar("density");
             predictDensity(system.walls.scalar("density"), system.walls.scalar("densityRate"), halfDt, system.walls.ownedCount());
@@ -58,6 +59,7 @@ void SymplecticPositionVerlet<D>::step(FluidSystem<D>& system, double t, double 
             x[i] = x0_[i] + halfDt * (v0_[i] + v[i]);
         }
         if (system.continuity()) correctDensity(fluid.scalar("density"), rho0_, fluid.scalar("densityRate"), dt, n);
+        system.correctBodies(dt);
         if (system.wallDensityEvolves())
             correctDensity(system.walls.scalar("density"), wallRho0_, system.walls.scalar("densityRate"), dt, system.walls.ownedCount());
     }

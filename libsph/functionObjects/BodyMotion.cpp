@@ -1,0 +1,38 @@
+#include "functionObjects/BodyMotion.hpp"
+
+#include "motion/FreeBody2D.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+namespace sph {
+
+template <int D>
+BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
+    if constexpr (D != 2) dict.fail("type", "bodyMotion reports 2D free bodies only");
+    std::filesystem::create_directories(context.outputDirectory);
+    const auto file = context.outputDirectory / "body.dat";
+    out_.open(file);
+    if (!out_) throw FatalError("error: cannot write '" + file.string() + "'");
+    out_ << "# t X Y angle Vx Vy omega Fx Fy torque\n";
+}
+
+template <int D>
+void BodyMotion<D>::execute(const FluidSystem<D>& system, double t) {
+    if constexpr (D == 2) {
+        const FreeBody2D* body = nullptr;
+        for (const Patch<D>& patch : system.patches)
+            if (patch.name == patch_) body = dynamic_cast<const FreeBody2D*>(patch.motion.get());
+        if (!body) dict_->fail("patch", "'" + patch_ + "' is not a patch whose motion is freeBody");
+        const auto& s = body->state();
+        out_ << fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}\n", t, s.position.x(), s.position.y(), s.angle,
+                            s.velocity.x(), s.velocity.y(), s.angularVelocity, body->force().x(), body->force().y(), body->torque())
+             << std::flush;
+    }
+}
+
+template class BodyMotion<1>;
+template class BodyMotion<2>;
+template class BodyMotion<3>;
+
+}  // namespace sph
