@@ -10,8 +10,9 @@ namespace {
 
 constexpr double dx = 0.02, rho0 = 1000.0, g = 9.81, H = 0.5;
 
-// Fluid at rest in hydrostatic equilibrium above y = 0, three wall layers below it.
-FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model) {
+// Fluid at rest in hydrostatic equilibrium above y = 0, three wall layers below it, the walls
+// accelerating at `wallAcceleration`.
+FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model, const Vec<2>& wallAcceleration = Vec<2>::Zero()) {
     const TaitEquationOfState eos(rho0, 20.0, 7.0, 0.0);
     ParticleSet<2> fluid("fluid");
     const int nx = 20, ny = 25;
@@ -30,6 +31,7 @@ FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model) {
     walls.addScalar("mass", rho0 * dx * dx);
     walls.addVector("normal", Vec<2>(0.0, 1.0));
     walls.addInteger("patch", 0);
+    walls.addVector("acceleration", wallAcceleration, false);
     for (int layer = 0; layer < 3; ++layer)
         for (int i = 0; i < nx; ++i) walls.position[static_cast<std::size_t>(layer * nx + i)] = {(i + 0.5) * dx, -(layer + 0.5) * dx};
     std::vector<Patch<2>> patches(1);
@@ -59,6 +61,31 @@ TEST(DummyParticlesAdami2012, ExtrapolatesTheHydrostaticPressureLinearlyIntoTheW
     // The inverse equation of state gives the wall density.
     const auto& rhoWall = system.walls.scalar("density");
     EXPECT_NEAR(rhoWall[0], TaitEquationOfState(rho0, 20.0, 7.0, 0.0).density(p[0]), 1e-9);
+}
+
+TEST(DummyParticlesAdami2012, WallAccelerationEntersTheExtrapolation) {
+    // Walls falling with gravity (a_w = g): the hydrostatic term vanishes and the wall pressure
+    // is the kernel-weighted mean of the fluid pressure around it, below the linear extrapolation.
+    auto falling = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")), Vec<2>(0.0, -g));
+    falling.evaluateRates(0.0);
+    auto fixed = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
+    fixed.evaluateRates(0.0);
+    const std::size_t w = 10;  // first layer, middle
+    const auto& pFalling = falling.walls.scalar("pressure");
+    const auto& pFixed = fixed.walls.scalar("pressure");
+    // The difference is exactly the hydrostatic term g . sum_f rho_f (x_w - x_f) W_wf / sum_f W_wf.
+    const WendlandC2<2> kernel(1.3 * dx);
+    const Vec<2>& xw = fixed.walls.position[w];
+    double weight = 0.0, moment = 0.0;
+    for (std::size_t f = 0; f < fixed.fluid.size(); ++f) {
+        const double r = (xw - fixed.fluid.position[f]).norm();
+        if (r >= fixed.supportRadius()) continue;
+        const double W = kernel.value(r);
+        weight += W;
+        moment += fixed.fluid.scalar("density")[f] * g * (fixed.fluid.position[f].y() - xw.y()) * W;
+    }
+    EXPECT_NEAR(pFixed[w] - pFalling[w], moment / weight, 1e-9 * rho0 * g * H);
+    EXPECT_GT(pFixed[w] - pFalling[w], 0.5 * rho0 * g * dx);
 }
 
 TEST(DummyParticlesAdami2012, HoldsTheColumnAgainstGravity) {

@@ -82,6 +82,19 @@ TEST(BadInput, MotionTableShorterThanTheRun) {
     expectContains(failureOf(dir), "motion.csv' covers t from 0 to 1, but the run goes from 0 to 2");
 }
 
+TEST(BadInput, BodyWithoutPositiveMass) {
+    const auto dir = copyCase("sinkingCylinder2D");
+    replaceInFile(dir / "constant/boundaryProperties", "mass 62.832;", "mass 0;");
+    expectContains(failureOf(dir), "error: keyword 'mass' in dictionary 'boundaryProperties/cylinder/motion': must be greater than zero, found 0");
+}
+
+TEST(BadInput, FreeBodyNeedsAWallForceModel) {
+    const auto dir = copyCase("sinkingCylinder2D");
+    writeFile(dir / "constant/boundaryProperties",
+              "tank { type dummyParticles; }\ncylinder { type dummyParticles; motion { type freeBody; mass 1; momentOfInertia 1; centreOfMass (0.5 0.3); } }\n");
+    expectContains(failureOf(dir), "a free body takes its loads from a wall-force model");
+}
+
 TEST(BadInput, NegativeOrZeroSpacing) {
     for (const std::string spacing : {"-0.00142875", "0"}) {
         const auto dir = copyCase("damBreak2D");
