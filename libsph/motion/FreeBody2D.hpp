@@ -21,6 +21,7 @@ public:
     explicit FreeBody2D(const Dictionary& dict);
     std::string describe() const override;
     bool isFree() const override { return true; }
+    Vec<2> centreOfMass() const override { return state_.position; }
     Kinematics<2> at(const Vec<2>& initialPosition, const Vec<2>& initialNormal, double t) const override;
     Vec<2> normalAt(const Vec<2>& initialNormal, double t) const override;
     void setLoads(const Vec<2>& force, double torque, const Vec<2>& gravity, double t) override;

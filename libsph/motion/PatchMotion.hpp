@@ -37,6 +37,8 @@ public:
     // A free body's motion is integrated with the fluid from the loads the fluid exerts; a
     // prescribed motion ignores these.
     virtual bool isFree() const { return false; }
+    // A free body's centre of mass now (the point its torque is taken about).
+    virtual Vec<D> centreOfMass() const { return Vec<D>::Zero(); }
     virtual void setLoads(const Vec<D>& /*force*/, double /*torque*/, const Vec<D>& /*gravity*/, double /*t*/) {}
     virtual void predict(double /*halfDt*/) {}
     virtual void correct(double /*dt*/) {}

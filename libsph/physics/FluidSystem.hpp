@@ -109,7 +109,6 @@ private:
     void addWallForces(double t);
     void moveWalls(double t);
     void recomputeSurface(const Patch<D>& patch);
-    Vec<D> bodyCentre(const Patch<D>& patch) const;
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;

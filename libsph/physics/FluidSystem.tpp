@@ -1,7 +1,6 @@
 // Implementation of FluidSystem<D>, included once per dimension by FluidSystem<D>.cpp so the
 // hot loops of each dimension compile in parallel.
 #include "physics/FluidSystem.hpp"
-#include "motion/FreeBody2D.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -171,7 +170,7 @@ void FluidSystem<D>::addWallForces(double t) {
         // The body takes the reaction of what its patch added to the fluid.
         Vec<D> force = Vec<D>::Zero();
         double torque = 0.0;
-        const Vec<D> centreOfMass = bodyCentre(patch);
+        const Vec<D> centreOfMass = patch.motion->centreOfMass();
         const double* m = fluid.scalar("mass").data();
         for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
             const Vec<D> f = -m[i] * (acceleration[i] - before[i]);
@@ -180,15 +179,6 @@ void FluidSystem<D>::addWallForces(double t) {
         }
         patch.motion->setLoads(force, torque, gravityAt(t), t);
     }
-}
-
-template <int D>
-Vec<D> FluidSystem<D>::bodyCentre(const Patch<D>& patch) const {
-    // The image of the initial centre of mass under the body's current rigid motion.
-    if constexpr (D == 2) {
-        if (const auto* body = dynamic_cast<const FreeBody2D*>(patch.motion.get())) return body->state().position;
-    }
-    return Vec<D>::Zero();
 }
 
 template <int D>
