@@ -49,7 +49,11 @@ HYDROSTATIC_MODELS = [
     ("dummyParticles", "type dummyParticles;", "layers"),
     ("dynamicBoundary", "type dynamicBoundary;", "layers"),
     ("deficiencyCorrection + lennardJones", "type deficiencyCorrection; " + PARTNER, "surface"),
+    ("deficiencyCorrection + lennardJones, temporalSmoothing 0.1", "type deficiencyCorrection; temporalSmoothing 0.1; " + PARTNER, "surface"),
+    ("deficiencyCorrection + lennardJones, temporalSmoothing 0.02", "type deficiencyCorrection; temporalSmoothing 0.02; " + PARTNER, "surface"),
     ("deficiencyCorrectionBoundaryIntegral + lennardJones", "type deficiencyCorrectionBoundaryIntegral; " + PARTNER, "surface"),
+    ("deficiencyCorrectionBoundaryIntegral + lennardJones, temporalSmoothing 0.02",
+     "type deficiencyCorrectionBoundaryIntegral; temporalSmoothing 0.02; " + PARTNER, "surface"),
     ("lennardJones alone", "type lennardJones; Dc 1; r0 %g;", "surface"),
     ("monaghanKajtar alone, K = g H", "type monaghanKajtar; K 0.9;", "surface"),
 ]
