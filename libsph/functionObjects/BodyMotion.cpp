@@ -10,11 +10,7 @@ namespace sph {
 template <int D>
 BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
     if constexpr (D != 2) dict.fail("type", "bodyMotion reports 2D free bodies only");
-    std::filesystem::create_directories(context.outputDirectory);
-    const auto file = context.outputDirectory / "body.dat";
-    out_.open(file);
-    if (!out_) throw FatalError("error: cannot write '" + file.string() + "'");
-    out_ << "# t X Y angle Vx Vy omega Fx Fy torque\n";
+    out_ = openTimeSeries(context.outputDirectory, "body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
 }
 
 template <int D>

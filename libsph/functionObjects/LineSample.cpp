@@ -17,12 +17,8 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext& c
     if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) freeSurfaceHeight_ = reference->get<double>("freeSurfaceHeight");
     std::filesystem::create_directories(directory_);
-    if (freeSurfaceHeight_) {
-        const auto file = directory_ / "error.dat";
-        errorOut_.open(file);
-        if (!errorOut_) throw FatalError("error: cannot write '" + file.string() + "'");
-        errorOut_ << "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)\n";
-    }
+    if (freeSurfaceHeight_)
+        errorOut_ = openTimeSeries(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>

@@ -12,11 +12,7 @@ SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext& c
     : origin_(dict.getVector<D>("origin")), direction_(dict.getVector<D>("direction")) {
     if (!(direction_.norm() > 0.0)) dict.fail("direction", "must not be the zero vector");
     direction_.normalize();
-    std::filesystem::create_directories(context.outputDirectory);
-    const auto file = context.outputDirectory / "surgeFront.dat";
-    out_.open(file);
-    if (!out_) throw FatalError("error: cannot write '" + file.string() + "'");
-    out_ << "# time front\n";
+    out_ = openTimeSeries(context.outputDirectory, "surgeFront.dat", "# time front");
 }
 
 template <int D>
