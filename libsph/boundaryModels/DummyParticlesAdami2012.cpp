@@ -20,7 +20,6 @@ template <int D>
 void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) {
     const Vec<D> gravity = system.gravityAt(t);
     const Vec<D>* aWall = system.walls.hasVector("acceleration") ? system.walls.vector("acceleration").data() : nullptr;  // none: fixed walls
-    const Vec<D>* xFluid = system.fluid.position.data();
     const Vec<D>* vFluid = system.fluid.vector("velocity").data();
     const double* pFluid = system.fluid.scalar("pressure").data();
     const double* rhoFluid = system.fluid.scalar("density").data();
@@ -31,7 +30,6 @@ void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t
     Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
     const double radius = system.supportRadius();
     const auto& cells = system.fluidCells();
-    (void)xFluid;
 
     std::visit(
         [&](const auto& kernel, const auto& eos) {

@@ -35,7 +35,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         for (const std::string& axis : domain.get<std::vector<std::string>>("periodic")) {
             const auto at = std::string("xyz").substr(0, D).find(axis);
             if (axis.size() != 1 || at == std::string::npos)
-                domain.fail("periodic", fmt::format("unknown direction '{}'; valid directions are: {}", axis, fmt::join(std::vector<std::string>{"x", "y", "z"}.begin(), std::vector<std::string>{"x", "y", "z"}.begin() + D, " ")));
+                domain.fail("periodic", fmt::format("unknown direction '{}'; valid directions are: {}", axis, std::string("x y z").substr(0, 2 * D - 1)));
             periodic[at] = 1.0;
         }
     }

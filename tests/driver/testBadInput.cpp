@@ -95,6 +95,12 @@ TEST(BadInput, FreeBodyNeedsAWallForceModel) {
     expectContains(failureOf(dir), "a free body takes its loads from a wall-force model");
 }
 
+TEST(BadInput, UnknownPeriodicDirection) {
+    const auto dir = copyCase("poiseuille2D");
+    replaceInFile(dir / "system/generateParticlesDict", "periodic (x);", "periodic (z);");
+    expectContains(failureOf(dir), "error: keyword 'periodic' in dictionary 'generateParticlesDict/domain': unknown direction 'z'; valid directions are: x y");
+}
+
 TEST(BadInput, NegativeOrZeroSpacing) {
     for (const std::string spacing : {"-0.00142875", "0"}) {
         const auto dir = copyCase("damBreak2D");
