@@ -38,8 +38,6 @@ public:
         entries_.emplace(name, Item{std::move(doc), std::move(factory)});
     }
 
-    bool has(const std::string& name) const { return entries_.count(name) != 0; }
-
     // `where` is the location of the word in the case, for the error message.
     Product create(const std::string& name, const SourceLocation& where, Args... args) const {
         auto it = entries_.find(name);

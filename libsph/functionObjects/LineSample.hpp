@@ -37,8 +37,6 @@ public:
     // Interpolated values at the points (exposed for tests).
     std::vector<Sample> sample(const FluidSystem<D>& system) const;
 
-    double lastL2Error() const { return l2_; }
-
 private:
     Vec<D> start_, end_;
     int points_;

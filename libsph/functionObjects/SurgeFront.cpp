@@ -25,7 +25,6 @@ void SurgeFront<D>::execute(const FluidSystem<D>& system, double t) {
     double front = -std::numeric_limits<double>::infinity();
     const auto& x = system.fluid.position;
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) front = std::max(front, (x[i] - origin_).dot(direction_));
-    front_ = front;
     out_ << fmt::format("{:.9g} {:.9g}\n", t, front) << std::flush;
 }
 

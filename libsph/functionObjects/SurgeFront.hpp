@@ -19,12 +19,9 @@ public:
     std::string describe() const override;
     void execute(const FluidSystem<D>& system, double t) override;
 
-    double lastFront() const { return front_; }
-
 private:
     Vec<D> origin_, direction_;
     std::ofstream out_;
-    double front_ = 0.0;
 };
 
 }  // namespace sph
