@@ -173,6 +173,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density};
     setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
                                                     properties.gravity, properties.gravityRampTime, periodic);
+    setup.integrator->checkCompatible(*setup.system, integratorDict);
     setup.dictionaries.push_back(std::move(schemes));
     setup.dictionaries.push_back(std::move(timeIntegration));
     setup.dictionaries.push_back(std::move(fluidDict));

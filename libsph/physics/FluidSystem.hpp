@@ -37,6 +37,10 @@ namespace sph {
 
 enum class DensityFormulation { Summation, Continuity };
 
+// Which terms an evaluation computes. An implicit-explicit integrator splits the right-hand
+// side: the viscous acceleration (implicit) apart from everything else (explicit).
+enum class RateTerms { All, AllButViscous, ViscousOnly };
+
 template <int D>
 struct Patch {
     std::string name;
@@ -68,8 +72,9 @@ public:
     void predictBodies(double halfDt);
     void correctBodies(double dt);
 
-    // Brings fluid particles that crossed a periodic side back into the domain; call between steps.
-    void wrapPeriodic();
+    // Brings fluid particles that crossed a periodic side back into the domain; call between
+    // steps. Returns whether any particle moved.
+    bool wrapPeriodic();
     const std::array<bool, D>& periodic() const { return periodic_; }
 
     // The cell lists refer to the particle arrays of this object: it never moves.
@@ -77,13 +82,16 @@ public:
     FluidSystem& operator=(const FluidSystem&) = delete;
 
     // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
-    void evaluateRates(double t);
+    // With ViscousOnly, the acceleration is the viscous term alone and the density rates are zero.
+    void evaluateRates(double t, RateTerms terms = RateTerms::All);
 
     // Reorders the fluid by cell for memory locality; call between steps only.
     void sortFluidByCell();
 
-    // Largest stable step: CFL on h/(c0 + max|v|) and sqrt(h/max|a|), and 0.125 h^2/nu.
-    double stableTimeStep(double courant) const;
+    // Largest stable step: CFL on h/(c0 + max|v|) and sqrt(h/max|a|), and 0.125 h^2/nu unless
+    // the integrator treats viscosity implicitly.
+    double stableTimeStep(double courant, bool viscousLimit = true) const;
+    bool viscous() const;
 
     Vec<D> gravityAt(double t) const;
     double smoothingLength() const;
@@ -105,7 +113,7 @@ public:
 private:
     void computeSummationDensity();
     void computeFluidPressure();
-    void computeForces(const Vec<D>& gravity);
+    void computeForces(const Vec<D>& gravity, RateTerms terms);
     void addWallForces(double t);
     void moveWalls(double t);
     void recomputeSurface(const Patch<D>& patch);

@@ -23,7 +23,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     walls.addVector("velocity", Vec<D>::Zero(), false);
-    if (std::visit([](const auto& v) { return v.enabled; }, models_.viscosity)) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
+    if (viscous()) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
     wallParticleEnd_ = patches.empty() ? walls.size() : 0;
     for (Patch<D>& patch : patches) {
         if (patch.model->actsThroughWallParticles()) {
@@ -49,12 +49,19 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
 }
 
 template <int D>
-void FluidSystem<D>::wrapPeriodic() {
+bool FluidSystem<D>::wrapPeriodic() {
+    bool moved = false;
     for (int d = 0; d < D; ++d) {
         if (!periodic_[static_cast<std::size_t>(d)]) continue;
         const double lower = domainMin_[d], extent = domainMax_[d] - domainMin_[d];
-        for (Vec<D>& x : fluid.position) x[d] = lower + (x[d] - lower) - extent * std::floor((x[d] - lower) / extent);
+        for (Vec<D>& x : fluid.position) {
+            const double periods = std::floor((x[d] - lower) / extent);
+            if (periods == 0.0) continue;
+            x[d] -= extent * periods;
+            moved = true;
+        }
     }
+    return moved;
 }
 
 template <int D>
@@ -131,7 +138,7 @@ void FluidSystem<D>::sortFluidByCell() {
 }
 
 template <int D>
-void FluidSystem<D>::evaluateRates(double t) {
+void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
     if (wallsMove_) moveWalls(t);
     {
         auto timer = timers.time(Stage::Neighbours);
@@ -149,9 +156,9 @@ void FluidSystem<D>::evaluateRates(double t) {
     }
     {
         auto timer = timers.time(Stage::Forces);
-        computeForces(gravityAt(t));
+        computeForces(gravityAt(t), terms);
     }
-    addWallForces(t);
+    if (terms != RateTerms::ViscousOnly) addWallForces(t);
 }
 
 template <int D>
@@ -229,10 +236,13 @@ void FluidSystem<D>::computeFluidPressure() {
 
 namespace {
 
-// The hot loop: one instantiation per kernel x viscosity x diffusion x density formulation.
+// The hot loop: one instantiation per kernel x viscosity x diffusion x density formulation,
+// and per split (Inviscid: the explicit part; ViscousOnly: the implicit part of an IMEX step).
 // Disabled terms are compile-time constants and vanish.
-template <int D, bool Continuity, class Kernel, class Viscosity, class Diffusion>
+template <int D, bool Continuity, bool ViscousOnly, class Kernel, class Viscosity, class Diffusion>
 void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscosity, const Diffusion& diffusion, const Vec<D>& gravity) {
+    constexpr bool Pressure = !ViscousOnly;
+    constexpr bool DensityRate = Continuity && !ViscousOnly;
     const std::size_t n = s.fluid.ownedCount();
     const Vec<D>* x = s.fluid.position.data();
     const Vec<D>* v = s.fluid.vector("velocity").data();
@@ -241,6 +251,7 @@ void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscos
     const double* p = s.fluid.scalar("pressure").data();
     Vec<D>* a = s.fluid.vector("acceleration").data();
     double* drho = Continuity ? s.fluid.scalar("densityRate").data() : nullptr;
+    const Vec<D> bodyForce = Pressure ? gravity : Vec<D>::Zero();
     const Vec<D>* vWall = s.walls.vector("velocity").data();
     const Vec<D>* vWallViscous = Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr;
     const double* mWall = s.walls.scalar("mass").data();
@@ -252,22 +263,22 @@ void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscos
 
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-        Vec<D> acceleration = gravity;
+        Vec<D> acceleration = bodyForce;
         double densityRate = 0.0;
-        const double pOverRho2 = p[i] / (rho[i] * rho[i]);
+        [[maybe_unused]] const double pOverRho2 = p[i] / (rho[i] * rho[i]);
         fluidCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
             if (j == i) return;
             const double F = kernel.gradientFactor(std::sqrt(r2));
-            acceleration -= (m[j] * (pOverRho2 + p[j] / (rho[j] * rho[j])) * F) * r;
+            if constexpr (Pressure) acceleration -= (m[j] * (pOverRho2 + p[j] / (rho[j] * rho[j])) * F) * r;
             const Vec<D> vij = v[i] - v[j];
-            if constexpr (Continuity) densityRate += m[j] * F * vij.dot(r);
+            if constexpr (DensityRate) densityRate += m[j] * F * vij.dot(r);
             if constexpr (Viscosity::enabled) acceleration += viscosity.acceleration(r, vij, r2, rho[i], rho[j], m[j], F);
-            if constexpr (Diffusion::enabled) densityRate += diffusion.rate(r, r2, rho[i], rho[j], m[j], F);
+            if constexpr (DensityRate && Diffusion::enabled) densityRate += diffusion.rate(r, r2, rho[i], rho[j], m[j], F);
         });
         wallCells.forEachNeighbour(x[i], radius, [&](std::uint32_t k, const Vec<D>& r, double r2) {
             const double F = kernel.gradientFactor(std::sqrt(r2));
-            acceleration -= (mWall[k] * (pOverRho2 + pWall[k] / (rhoWall[k] * rhoWall[k])) * F) * r;
-            if constexpr (Continuity) densityRate += mWall[k] * F * (v[i] - vWall[k]).dot(r);
+            if constexpr (Pressure) acceleration -= (mWall[k] * (pOverRho2 + pWall[k] / (rhoWall[k] * rhoWall[k])) * F) * r;
+            if constexpr (DensityRate) densityRate += mWall[k] * F * (v[i] - vWall[k]).dot(r);
             if constexpr (Viscosity::enabled)
                 acceleration += viscosity.acceleration(r, Vec<D>(v[i] - vWallViscous[k]), r2, rho[i], rhoWall[k], mWall[k], F);
         });
@@ -279,22 +290,41 @@ void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscos
 }  // namespace
 
 template <int D>
-void FluidSystem<D>::computeForces(const Vec<D>& gravity) {
+void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->gravity = gravity;
+    const auto dispatch = [&]<bool ViscousOnly>(const auto& kernel, const auto& viscosity, const auto& diffusion) {
+        using Diffusion = std::decay_t<decltype(diffusion)>;
+        if (continuity()) {
+            fluidRates<D, true, ViscousOnly>(*this, kernel, viscosity, diffusion, gravity);
+        } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
+            fluidRates<D, false, ViscousOnly>(*this, kernel, viscosity, diffusion, gravity);
+        }
+    };
     std::visit(
         [&](const auto& kernel, const auto& viscosity, const auto& diffusion) {
-            using Diffusion = std::decay_t<decltype(diffusion)>;
-            if (continuity()) {
-                fluidRates<D, true>(*this, kernel, viscosity, diffusion, gravity);
-            } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
-                fluidRates<D, false>(*this, kernel, viscosity, diffusion, gravity);
+            using Viscosity = std::decay_t<decltype(viscosity)>;
+            if (terms == RateTerms::All) {
+                dispatch.template operator()<false>(kernel, viscosity, diffusion);
+            } else if constexpr (Viscosity::enabled) {  // without viscosity the split is trivial
+                if (terms == RateTerms::AllButViscous) dispatch.template operator()<false>(kernel, NoViscosity{}, diffusion);
+                else dispatch.template operator()<true>(kernel, viscosity, NoDensityDiffusion{});
+            } else if (terms == RateTerms::AllButViscous) {
+                dispatch.template operator()<false>(kernel, viscosity, diffusion);
+            } else {
+                std::fill(fluid.vector("acceleration").begin(), fluid.vector("acceleration").end(), Vec<D>::Zero());
+                if (continuity()) std::fill(fluid.scalar("densityRate").begin(), fluid.scalar("densityRate").end(), 0.0);
             }
         },
         models_.kernel, models_.viscosity, models_.diffusion);
 }
 
 template <int D>
-double FluidSystem<D>::stableTimeStep(double courant) const {
+bool FluidSystem<D>::viscous() const {
+    return std::visit([](const auto& v) { return v.enabled; }, models_.viscosity);
+}
+
+template <int D>
+double FluidSystem<D>::stableTimeStep(double courant, bool viscousLimit) const {
     const std::size_t n = fluid.ownedCount();
     const Vec<D>* v = fluid.vector("velocity").data();
     const Vec<D>* a = fluid.vector("acceleration").data();
@@ -309,7 +339,7 @@ double FluidSystem<D>::stableTimeStep(double courant) const {
     double dt = courant * h / (c0 + std::sqrt(maxSpeed2));
     if (maxAcceleration2 > 0.0) dt = std::min(dt, courant * std::sqrt(h / std::sqrt(maxAcceleration2)));
     const double nu = viscousTimeStepNu(models_.viscosity);
-    if (nu > 0.0) dt = std::min(dt, 0.125 * h * h / nu);
+    if (nu > 0.0 && viscousLimit) dt = std::min(dt, 0.125 * h * h / nu);
     return dt;
 }
 

@@ -1,6 +1,7 @@
 #include "timeIntegrators/SymplecticPositionVerlet.hpp"
 
 #include "physics/FluidSystem.hpp"
+#include "timeIntegrators/EvolvedState.hpp"
 
 namespace sph {
 
@@ -16,54 +17,37 @@ void correctDensity(std::vector<double>& rho, const std::vector<double>& rhoStar
     }
 }
 
-void predictDensity(std::vector<double>& rho, const std::vector<double>& rate, double halfDt, std::size_t n) {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) rho[i] += halfDt * rate[i];
-}
-
 }  // namespace
 
 template <int D>
-void SymplecticPositionVerlet<D>::step(FluidSystem<D>& system, double t, double dt) {
+double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& x = fluid.position;
     auto& v = fluid.vector("velocity");
     const auto& a = fluid.vector("acceleration");
+    const auto densitySets = evolvedDensitySets(system);
     const double halfDt = 0.5 * dt;
     {
         auto timer = system.timers.time(Stage::Integrator);
-        x0_ = x;
-        v0_ = v;
-#pragma omp parallel for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
-            x[i] += halfDt * v[i];
-            v[i] += halfDt * a[i];
-        }
-        if (system.continuity()) {
-            rho0_ = fluid.scalar("density");
-            predictDensity(fluid.scalar("density"), fluid.scalar("densityRate"), halfDt, n);
-        }
+        start_.save(system, densitySets);
+        addScaled(x, x, halfDt, v, n);
+        addScaled(v, v, halfDt, a, n);
+        for (ParticleSet<D>* set : densitySets) addScaled(set->scalar("density"), set->scalar("density"), halfDt, set->scalar("densityRate"), set->ownedCount());
         system.predictBodies(halfDt);
-        if (system.wallDensityEvolves()) {
-            wallRho0_ = system.walls.scalar("density");
-            predictDensity(system.walls.scalar("density"), system.walls.scalar("densityRate"), halfDt, system.walls.ownedCount());
-        }
     }
     this->evaluate(system, t + halfDt);
     {
         auto timer = system.timers.time(Stage::Integrator);
+        addScaled(v, start_.velocity, dt, a, n);
 #pragma omp parallel for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
-            v[i] = v0_[i] + dt * a[i];
-            x[i] = x0_[i] + halfDt * (v0_[i] + v[i]);
-        }
-        if (system.continuity()) correctDensity(fluid.scalar("density"), rho0_, fluid.scalar("densityRate"), dt, n);
+        for (std::size_t i = 0; i < n; ++i) x[i] = start_.position[i] + halfDt * (start_.velocity[i] + v[i]);
+        for (std::size_t s = 0; s < densitySets.size(); ++s)
+            correctDensity(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->scalar("densityRate"), dt, densitySets[s]->ownedCount());
         system.correctBodies(dt);
-        if (system.wallDensityEvolves())
-            correctDensity(system.walls.scalar("density"), wallRho0_, system.walls.scalar("densityRate"), dt, system.walls.ownedCount());
     }
     this->evaluate(system, t + dt);
+    return dt;
 }
 
 template class SymplecticPositionVerlet<1>;

@@ -10,10 +10,8 @@
 // Example (system/timeIntegration):   integrator { type symplectic; }
 #pragma once
 
-#include "core/Vector.hpp"
+#include "timeIntegrators/EvolvedState.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
-
-#include <vector>
 
 namespace sph {
 
@@ -21,11 +19,13 @@ template <int D>
 class SymplecticPositionVerlet : public TimeIntegrator<D> {
 public:
     std::string describe() const override { return "symplectic (position Verlet predictor-corrector)"; }
-    void step(FluidSystem<D>& system, double t, double dt) override;
+    bool advancesFreeBodies() const override { return true; }
+
+protected:
+    double takeStep(FluidSystem<D>& system, double t, double dt) override;
 
 private:
-    std::vector<Vec<D>> x0_, v0_;
-    std::vector<double> rho0_, wallRho0_;
+    StepStart<D> start_;
 };
 
 }  // namespace sph

@@ -1,7 +1,7 @@
 // The time-integrator family. An integrator advances the FluidSystem's state (fluid position,
 // velocity, density with continuity, and wall density where a boundary model evolves it)
-// by one step, calling evaluateRates() for the right-hand side. On entry the rates at the
-// start of the step are current; on exit they must be current at its end.
+// by one step, calling evaluate() for the right-hand side. On entry the rates at the start of
+// the step are current; on exit they are current at its end.
 #pragma once
 
 #include "core/Registry.hpp"
@@ -9,25 +9,55 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sph {
 
 template <int D>
 class FluidSystem;
 
+enum class RateTerms;
+
 template <int D>
 class TimeIntegrator {
 public:
     virtual ~TimeIntegrator() = default;
     virtual std::string describe() const = 0;
-    virtual void step(FluidSystem<D>& system, double t, double dt) = 0;
-    std::size_t rateEvaluations() const { return evaluations_; }
+
+    // Advances from t by dt, or by less where an adaptive integrator's error control asks;
+    // returns the step taken.
+    double step(FluidSystem<D>& system, double t, double dt) {
+        ++steps_;
+        return takeStep(system, t, dt);
+    }
+
+    // The driver changed the state between steps (periodic wrap, particles reordered by cell):
+    // an integrator that keeps state of its own restarts from the system's.
+    virtual void stateChangedOutside() {}
+
+    // Capabilities the driver and the case reader check.
+    virtual bool viscosityImplicit() const { return false; }  // no explicit viscous step limit
+    virtual bool allowsReordering() const { return true; }    // false: history that reordering would break
+    virtual bool advancesFreeBodies() const { return false; }
+
+    // Stops before the first step if the case selected what this integrator cannot advance;
+    // `dict` is the integrator's dictionary, for the message.
+    virtual void checkCompatible(const FluidSystem<D>& system, const Dictionary& dict) const;
+
+    // Name and value of each counter, for the end-of-run report.
+    virtual std::vector<std::pair<std::string, long>> counters() const;
+    long rateEvaluations() const { return evaluations_; }
 
 protected:
+    virtual double takeStep(FluidSystem<D>& system, double t, double dt) = 0;
     void evaluate(FluidSystem<D>& system, double t);
+    void evaluate(FluidSystem<D>& system, double t, RateTerms terms);
+    long steps() const { return steps_; }
 
 private:
-    std::size_t evaluations_ = 0;
+    long steps_ = 0;
+    long evaluations_ = 0;
 };
 
 template <int D>

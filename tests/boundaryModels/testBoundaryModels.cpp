@@ -114,7 +114,7 @@ TEST(DynamicBoundaryCrespo2007, WallDensityRateFromApproachingFluid) {
     walls.addScalar("mass", 0.4);
     walls.addScalar("density", 1005.0);
     std::vector<Patch<2>> patches(1);
-    patches[0] = {"floor", 0, 1, std::make_unique<DynamicBoundaryCrespo2007<2>>()};
+    patches[0] = {"floor", 0, 1, std::make_unique<DynamicBoundaryCrespo2007<2>>(), std::nullopt, nullptr};
     const WendlandC2<2> kernel(1.3 * dx);
     FluidModels<2> models{kernel, eos, NoViscosity{}, NoDensityDiffusion{}, DensityFormulation::Continuity};
     FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1),

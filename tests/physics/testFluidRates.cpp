@@ -95,7 +95,9 @@ TEST(FluidRates, SummationDensityOfAFullLatticeIsNearRho0) {
     for (int j = -5; j <= 5; ++j)
         for (int i = -5; i <= 5; ++i) latticeSum += dx * dx * kernel.value(dx * std::hypot(i, j));
     for (std::size_t k = 0; k < rho.size(); ++k) {
-        if (lattice.interior[k]) ASSERT_NEAR(rho[k], 1000.0 * latticeSum, 1e-9);
+        if (lattice.interior[k]) {
+            ASSERT_NEAR(rho[k], 1000.0 * latticeSum, 1e-9);
+        }
     }
     EXPECT_NEAR(latticeSum, 1.0, 0.02);
     EXPECT_FALSE(lattice.system.fluid.hasScalar("densityRate"));  // summation allocates no rate

@@ -1,0 +1,54 @@
+#include "timeIntegrators/SundialsIntegrator.hpp"
+
+namespace sph {
+
+template <int D>
+double SundialsIntegrator<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+    system_ = &system;
+    if (restart_ || !memory_) {
+        N_Vector y = state_.wrap(system);
+        if (memory_) {
+            addCounts(beforeRestarts_);
+            release();
+        }
+        create(system, t, y, lastStep_);
+        state_.markEvaluated(t);  // on entry the rates at t are current
+        restart_ = false;
+    }
+    double reached = t;
+    const int flag = advance(t, dt, reached);
+    if (flag < 0) failIntegration(solverName_, flagName(flag), reached, state_.lastFailure());
+    lastStep_ = lastStep();
+    this->evaluate(system, reached);
+    state_.markEvaluated(reached);
+    return reached - t;
+}
+
+template <int D>
+int SundialsIntegrator<D>::rates(double t, N_Vector y, N_Vector ydot, RateTerms terms) {
+    return state_.rates(*system_, t, y, ydot, terms, [this](double time, RateTerms part) { this->evaluate(*system_, time, part); });
+}
+
+template <int D>
+int SundialsIntegrator<D>::viscousJacobianTimes(double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy) {
+    return state_.viscousJacobianTimes(*system_, t, w, Jw, y, fy, [this](double time, RateTerms part) { this->evaluate(*system_, time, part); });
+}
+
+template <int D>
+std::vector<std::pair<std::string, long>> SundialsIntegrator<D>::counters() const {
+    auto result = TimeIntegrator<D>::counters();
+    Counts counts = beforeRestarts_;
+    if (memory_) addCounts(counts);
+    result.emplace_back("rejected steps (error test)", counts.rejected);
+    if (!implicitSolve_) return result;
+    result.emplace_back("nonlinear iterations", counts.nonlinearIterations);
+    result.emplace_back("nonlinear convergence failures", counts.nonlinearFailures);
+    result.emplace_back("linear iterations", counts.linearIterations);
+    return result;
+}
+
+template class SundialsIntegrator<1>;
+template class SundialsIntegrator<2>;
+template class SundialsIntegrator<3>;
+
+}  // namespace sph

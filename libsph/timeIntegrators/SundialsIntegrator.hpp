@@ -1,0 +1,51 @@
+// What the SUNDIALS integrators (ARKODE ERKStep, ARKODE ARKStep, CVODE) share: one SUNDIALS
+// step per driver step, with the driver's step as the stop time (and as the step when fixed);
+// a restart from the particle arrays after the driver reordered or wrapped them, keeping the
+// step size reached; the state's rates evaluated at the end of each step; the counters.
+#pragma once
+
+#include "timeIntegrators/SundialsState.hpp"
+#include "timeIntegrators/TimeIntegrator.hpp"
+
+namespace sph {
+
+template <int D>
+class SundialsIntegrator : public TimeIntegrator<D> {
+public:
+    void stateChangedOutside() override { restart_ = true; }
+    std::vector<std::pair<std::string, long>> counters() const override;
+
+protected:
+    struct Counts {
+        long rejected = 0, nonlinearIterations = 0, nonlinearFailures = 0, linearIterations = 0;
+    };
+
+    explicit SundialsIntegrator(std::string solverName, bool implicitSolve) : solverName_(std::move(solverName)), implicitSolve_(implicitSolve) {}
+    double takeStep(FluidSystem<D>& system, double t, double dt) final;
+
+    // One SUNDIALS package: create its memory at (t, y) with `initialStep` (0: its own guess),
+    // free it, take one step to at most t + dt, name a return flag, read its last step and counters.
+    virtual void create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) = 0;
+    virtual void release() = 0;
+    virtual int advance(double t, double dt, double& reached) = 0;
+    virtual std::string flagName(int flag) const = 0;
+    virtual double lastStep() const = 0;
+    virtual void addCounts(Counts& counts) const = 0;
+
+    // The right-hand side of the given terms at (t, y), for the packages' callbacks.
+    int rates(double t, N_Vector y, N_Vector ydot, RateTerms terms);
+    int viscousJacobianTimes(double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy);
+
+    SundialsState<D> state_;
+    void* memory_ = nullptr;
+    FluidSystem<D>* system_ = nullptr;
+
+private:
+    std::string solverName_;
+    bool implicitSolve_;
+    bool restart_ = true;
+    double lastStep_ = 0.0;
+    Counts beforeRestarts_;
+};
+
+}  // namespace sph

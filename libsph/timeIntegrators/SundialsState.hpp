@@ -1,0 +1,99 @@
+// The bridge between SUNDIALS and a FluidSystem, shared by the ARKODE and CVODE integrators.
+//
+// The state vector is an N_Vector ManyVector whose serial subvectors wrap the particle arrays
+// themselves (fluid position, velocity, and each density that follows the continuity
+// equation): SUNDIALS writes each step's solution straight into the particles. The right-hand
+// side loads the stage vector it is given into the particle arrays (skipped when it is the
+// wrapped vector), evaluates, and returns (v, a, drho). It catches every exception and
+// non-finite rate and returns a recoverable error, so an adaptive integrator retries smaller;
+// the message is kept for the report if the step fails for good.
+//
+// Evaluating at the end of a step keeps the driver's rates current; an explicit method's first
+// stage of the next step asks for the same (t, y), which is then answered from the arrays.
+#pragma once
+
+#include "io/Dictionary.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <nvector/nvector_manyvector.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sph {
+
+// Relative and absolute tolerances; the absolute one is scaled per block by h (positions),
+// c0 (velocities) and rho0 (densities), so one number fits every case.
+struct SundialsTolerances {
+    double relative = 1e-4;
+    double absolute = 1e-6;
+};
+
+SundialsTolerances readTolerances(const Dictionary& dict);
+
+// The Krylov solver of the implicit integrators: SUNDIALS' GMRES, matrix-free.
+enum class JacobianTimesVector { DifferenceQuotient, VelocityBlock };
+struct KrylovOptions {
+    int maxKrylovDimension = 10;
+    JacobianTimesVector jacobian = JacobianTimesVector::DifferenceQuotient;
+};
+
+int readMaxKrylovDimension(const Dictionary& dict);
+KrylovOptions readKrylovOptions(const Dictionary& dict);
+
+template <int D>
+class SundialsState {
+public:
+    SundialsState();
+    ~SundialsState();
+    SundialsState(const SundialsState&) = delete;
+    SundialsState& operator=(const SundialsState&) = delete;
+
+    SUNContext context() const { return context_; }
+
+    // (Re)wraps the particle arrays; call after the system's arrays moved (reordering).
+    N_Vector wrap(FluidSystem<D>& system);
+    N_Vector wrapped() const { return wrapped_; }
+
+    // Per-component absolute tolerances, scaled as in SundialsTolerances.
+    N_Vector absoluteTolerances(const FluidSystem<D>& system, double absolute);
+
+    // The right-hand side f(t, y) -> ydot of the given terms; returns 0, or 1 (recoverable).
+    // `evaluate` runs the system's evaluation (the integrator counts it).
+    int rates(FluidSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
+              const std::function<void(double, RateTerms)>& evaluate);
+
+    // J w for the implicit viscous part with positions and densities frozen: the viscous
+    // acceleration is linear in velocity (laminar viscosity), so J w = a_v(v + w) - a_v(v).
+    int viscousJacobianTimes(FluidSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
+                             const std::function<void(double, RateTerms)>& evaluate);
+
+    // Records that the particle arrays hold the state at t with all rates evaluated.
+    void markEvaluated(double t) { evaluatedTime_ = t, evaluatedValid_ = true; }
+
+    // The message of the last failed right-hand side, for the error report.
+    const std::string& lastFailure() const { return lastFailure_; }
+
+private:
+    void load(FluidSystem<D>& system, N_Vector y);
+    bool holdsState(FluidSystem<D>& system, N_Vector y) const;
+    std::vector<std::pair<double*, std::size_t>> blocks(FluidSystem<D>& system) const;
+
+    SUNContext context_ = nullptr;
+    std::vector<N_Vector> parts_;
+    N_Vector wrapped_ = nullptr;
+    N_Vector absoluteTolerances_ = nullptr;
+    double evaluatedTime_ = 0.0;
+    bool evaluatedValid_ = false;
+    std::string lastFailure_;
+};
+
+// Throws the FatalError for a SUNDIALS failure: the solver's flag name and, when the
+// right-hand side failed, why.
+[[noreturn]] void failIntegration(const std::string& solver, const std::string& flagName, double t, const std::string& rightHandSideFailure);
+
+}  // namespace sph

@@ -1,0 +1,57 @@
+#include "timeIntegrators/VerletMonaghan1994.hpp"
+
+#include "timeIntegrators/EvolvedState.hpp"
+
+#include <fmt/format.h>
+
+namespace sph {
+
+template <int D>
+std::string VerletMonaghan1994<D>::describe() const {
+    return fmt::format("verlet (Euler step every {} steps)", eulerEvery_);
+}
+
+template <int D>
+double VerletMonaghan1994<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+    {
+        auto timer = system.timers.time(Stage::Integrator);
+        const bool euler = stepsSinceEuler_ < 0 || stepsSinceEuler_ + 1 >= eulerEvery_;
+        stepsSinceEuler_ = euler ? 0 : stepsSinceEuler_ + 1;
+        // An Euler step reads the current level twice: v^{n+1} = v^n + dt a^n.
+        const double reach = euler ? dt : 2.0 * dt;
+        auto& fluid = system.fluid;
+        const std::size_t n = fluid.ownedCount();
+        auto& x = fluid.position;
+        auto& v = fluid.vector("velocity");
+        const auto& a = fluid.vector("acceleration");
+        auto& vPrevious = fluid.addVector("previousVelocity", Vec<D>::Zero(), false);
+        const double halfDt2 = 0.5 * dt * dt;
+#pragma omp parallel for schedule(static)
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] += dt * v[i] + halfDt2 * a[i];
+            const Vec<D> older = euler ? v[i] : vPrevious[i];
+            vPrevious[i] = v[i];
+            v[i] = older + reach * a[i];
+        }
+        for (ParticleSet<D>* set : evolvedDensitySets(system)) {
+            auto& rho = set->scalar("density");
+            auto& rhoPrevious = set->addScalar("previousDensity", 0.0, false);
+            const auto& rate = set->scalar("densityRate");
+            const std::size_t count = set->ownedCount();
+#pragma omp parallel for schedule(static)
+            for (std::size_t i = 0; i < count; ++i) {
+                const double older = euler ? rho[i] : rhoPrevious[i];
+                rhoPrevious[i] = rho[i];
+                rho[i] = older + reach * rate[i];
+            }
+        }
+    }
+    this->evaluate(system, t + dt);
+    return dt;
+}
+
+template class VerletMonaghan1994<1>;
+template class VerletMonaghan1994<2>;
+template class VerletMonaghan1994<3>;
+
+}  // namespace sph
