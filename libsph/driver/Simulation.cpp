@@ -58,6 +58,8 @@ void checkState(const FluidSystem<D>& system, long step, double t, double rho0) 
     const auto& rho = system.fluid.scalar("density");
     const Vec<D>& lo = system.domainMin();
     const Vec<D>& hi = system.domainMax();
+    // Weakly compressible flow is meaningless past Mach 1: a faster particle has blown up.
+    const double c0 = std::visit([](const auto& e) { return e.c0; }, system.models().eos);
     const auto stop = [&](std::size_t i, const std::string& what) {
         throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
                                      "    The last written time is kept; reduce the time step (courant) or check the case.",
@@ -66,6 +68,7 @@ void checkState(const FluidSystem<D>& system, long step, double t, double rho0) 
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) {
         if (!x[i].allFinite()) stop(i, "has a non-finite position");
         if (!v[i].allFinite()) stop(i, "has a non-finite velocity");
+        if (v[i].squaredNorm() > c0 * c0) stop(i, fmt::format("moves at {:g}, faster than the speed of sound c0 = {:g}", v[i].norm(), c0));
         if (!std::isfinite(rho[i]) || rho[i] < 0.5 * rho0 || rho[i] > 2.0 * rho0)
             stop(i, fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0));
         if ((x[i].array() < lo.array()).any() || (x[i].array() > hi.array()).any())

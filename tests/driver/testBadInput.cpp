@@ -203,3 +203,35 @@ TEST(BadInput, ExistingInitialStateIsNotOverwrittenByDefault) {
         expectContains(e.what(), "exists; remove it (./Allclean) or pass -overwrite");
     }
 }
+
+TEST(BadInput, UnknownButcherTableListsSundialsTables) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type arkodeERK; table ARKODE_RK4;");
+    const std::string message = failureOf(dir);
+    expectContains(message, "error: keyword 'table' in dictionary 'timeIntegration/integrator': unknown table 'ARKODE_RK4'; valid names are:");
+    expectContains(message, "    ARKODE_DORMAND_PRINCE_7_4_5\n");
+}
+
+TEST(BadInput, UnknownAdaptivityController) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type arkodeERK; adaptive yes; controller PD;");
+    expectContains(failureOf(dir), "unknown adaptivity controller 'PD'; valid controller names are:\n    PID\n    PI\n    I\n    explicitGustafsson");
+}
+
+TEST(BadInput, VelocityBlockJacobianNeedsLaminarViscosity) {
+    const auto dir = copyCase("damBreak2D");  // artificial viscosity
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type arkodeIMEX; jacobianTimesVector velocityBlock;");
+    expectContains(failureOf(dir), "velocityBlock is exact only for a viscosity linear in velocity (laminar)");
+}
+
+TEST(BadInput, FreeBodyWithAnIntegratorThatCannotAdvanceIt) {
+    const auto dir = copyCase("sinkingCylinder2D");
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type verlet;");
+    expectContains(failureOf(dir), "patch 'cylinder' is a free body, which only the symplectic integrator advances; found verlet");
+}
+
+TEST(BadInput, EulerEveryMustBePositive) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type verlet; eulerEvery 0;");
+    expectContains(failureOf(dir), "keyword 'eulerEvery' in dictionary 'timeIntegration/integrator': must be at least 1, found 0");
+}
