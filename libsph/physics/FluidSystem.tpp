@@ -237,7 +237,8 @@ void FluidSystem<D>::computeFluidPressure() {
 namespace {
 
 // The hot loop: one instantiation per kernel x viscosity x diffusion x density formulation,
-// and per split (Inviscid: the explicit part; ViscousOnly: the implicit part of an IMEX step).
+// and per side of an IMEX split (ViscousOnly: the implicit part; the explicit part is the
+// instantiation with NoViscosity).
 // Disabled terms are compile-time constants and vanish.
 template <int D, bool Continuity, bool ViscousOnly, class Kernel, class Viscosity, class Diffusion>
 void fluidRates(FluidSystem<D>& s, const Kernel& kernel, const Viscosity& viscosity, const Diffusion& diffusion, const Vec<D>& gravity) {

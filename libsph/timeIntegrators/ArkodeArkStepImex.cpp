@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
-#include <cstdlib>
 #include <map>
 
 namespace sph {
@@ -41,12 +40,10 @@ ArkodeArkStepImex<D>::~ArkodeArkStepImex() {
 template <int D>
 std::string ArkodeArkStepImex<D>::describe() const {
     const std::string jacobian = krylov_.jacobian == JacobianTimesVector::VelocityBlock ? "velocityBlock" : "differenceQuotient";
-    const std::string stepping = adaptivity_.adaptive ? fmt::format("adaptive: relativeTolerance {:g}, absoluteTolerance {:g}, controller {}",
-                                                                    adaptivity_.tolerances.relative, adaptivity_.tolerances.absolute,
-                                                                    adaptivity_.controllerName)
-                                                      : "fixed step";
-    return fmt::format("arkodeIMEX ({}, {}; GMRES, maxKrylovDimension {}, jacobianTimesVector {}; viscosity implicit)", table_, stepping,
-                       krylov_.maxKrylovDimension, jacobian);
+    const std::string stepping = adaptivity_.adaptive ? "adaptive, controller " + adaptivity_.controllerName : "fixed step";
+    return fmt::format("arkodeIMEX ({}, {}, relativeTolerance {:g}, absoluteTolerance {:g}; GMRES, maxKrylovDimension {}, "
+                       "jacobianTimesVector {}; viscosity implicit)",
+                       table_, stepping, adaptivity_.tolerances.relative, adaptivity_.tolerances.absolute, krylov_.maxKrylovDimension, jacobian);
 }
 
 template <int D>
@@ -84,14 +81,10 @@ void ArkodeArkStepImex<D>::create(FluidSystem<D>& system, double t, N_Vector y, 
     linearSolver_ = SUNLinSol_SPGMR(y, SUN_PREC_NONE, krylov_.maxKrylovDimension, this->state_.context());
     ARKStepSetLinearSolver(memory, linearSolver_, nullptr);
     if (krylov_.jacobian == JacobianTimesVector::VelocityBlock) ARKStepSetJacTimes(memory, nullptr, jacobianTimes);
-    if (adaptivity_.adaptive) {
-        ARKStepSVtolerances(memory, adaptivity_.tolerances.relative, this->state_.absoluteTolerances(system, adaptivity_.tolerances.absolute));
-        ARKStepSetAdaptivityMethod(memory, adaptivity_.controller, 1, 0, nullptr);
-        if (initialStep > 0.0) ARKStepSetInitStep(memory, initialStep);
-    } else {
-        // The Newton solve still needs tolerances for its convergence test.
-        ARKStepSVtolerances(memory, 1e-6, this->state_.absoluteTolerances(system, 1e-8));
-    }
+    ARKStepSVtolerances(memory, adaptivity_.tolerances.relative, this->state_.absoluteTolerances(system, adaptivity_.tolerances.absolute));
+    if (!adaptivity_.adaptive) return;
+    ARKStepSetAdaptivityMethod(memory, adaptivity_.controller, 1, 0, nullptr);
+    if (initialStep > 0.0) ARKStepSetInitStep(memory, initialStep);
 }
 
 template <int D>
@@ -110,10 +103,7 @@ int ArkodeArkStepImex<D>::advance(double t, double dt, double& reached) {
 
 template <int D>
 std::string ArkodeArkStepImex<D>::flagName(int flag) const {
-    char* name = ARKStepGetReturnFlagName(flag);
-    const std::string result = name;
-    std::free(name);
-    return result;
+    return takeSundialsString(ARKStepGetReturnFlagName(flag));
 }
 
 template <int D>

@@ -7,15 +7,15 @@
 // step limit 0.125 h^2/nu no longer applies; the acoustic and force limits do.
 // Tables by the name of ARKODE's IMEX pairs (ARK324L2SA, ARK436L2SA, ARK437L2SA, ARK548L2SA,
 // ARK548L2SAb); fixed step or adaptive as for arkodeERK (controllers add implicitGustafsson,
-// imexGustafsson).
+// imexGustafsson). The tolerances set the Newton iteration's convergence test in both modes.
 // Reference: C.A. Kennedy, M.H. Carpenter, Appl. Numer. Math. 44 (2003) 139-181; SUNDIALS 6.4
 // user guide (ARKStep, SPGMR).
 // Example (system/timeIntegration):
-//   integrator { type arkodeIMEX; table ARK324L2SA; adaptive no;
-//                jacobianTimesVector velocityBlock; maxKrylovDimension 10; }
+//   integrator { type arkodeIMEX; table ARK324L2SA; adaptive no; relativeTolerance 1e-4;
+//                absoluteTolerance 1e-6; jacobianTimesVector velocityBlock; maxKrylovDimension 10; }
 #pragma once
 
-#include "timeIntegrators/ArkodeErkStep.hpp"
+#include "timeIntegrators/SundialsIntegrator.hpp"
 
 namespace sph {
 

@@ -6,25 +6,8 @@
 #include <arkode/arkode_erkstep.h>
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cstdlib>
 
 namespace sph {
-
-AdaptivityOptions readAdaptivity(const Dictionary& dict, const std::vector<std::string>& controllers) {
-    AdaptivityOptions options;
-    options.adaptive = dict.getOrDefault("adaptive", false);
-    if (!options.adaptive) return options;
-    options.tolerances = readTolerances(dict);
-    options.controllerName = dict.getOrDefault<std::string>("controller", options.controllerName);
-    static const std::vector<std::string> methods{"PID", "PI", "I", "explicitGustafsson", "implicitGustafsson", "imexGustafsson"};
-    const auto valid = std::find(controllers.begin(), controllers.end(), options.controllerName);
-    if (valid == controllers.end())
-        dict.fail("controller", fmt::format("unknown adaptivity controller '{}'; valid controller names are:\n    {}", options.controllerName,
-                                            fmt::join(controllers, "\n    ")));
-    options.controller = static_cast<int>(std::find(methods.begin(), methods.end(), options.controllerName) - methods.begin());
-    return options;
-}
 
 template <int D>
 std::vector<std::string> ArkodeErkStep<D>::tableNames() {
@@ -84,10 +67,7 @@ int ArkodeErkStep<D>::advance(double t, double dt, double& reached) {
 
 template <int D>
 std::string ArkodeErkStep<D>::flagName(int flag) const {
-    char* name = ERKStepGetReturnFlagName(flag);
-    const std::string result = name;
-    std::free(name);
-    return result;
+    return takeSundialsString(ERKStepGetReturnFlagName(flag));
 }
 
 template <int D>

@@ -14,15 +14,6 @@
 
 namespace sph {
 
-struct AdaptivityOptions {
-    bool adaptive = false;
-    SundialsTolerances tolerances;
-    int controller = 0;  // ARKODE's adaptivity method: 0 PID, 1 PI, 2 I, 3 explicit, 4 implicit, 5 ImEx Gustafsson
-    std::string controllerName = "PID";
-};
-
-AdaptivityOptions readAdaptivity(const Dictionary& dict, const std::vector<std::string>& controllers);
-
 template <int D>
 class ArkodeErkStep : public SundialsIntegrator<D> {
 public:

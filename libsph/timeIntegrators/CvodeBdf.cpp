@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
-#include <cstdlib>
 
 namespace sph {
 
@@ -60,10 +59,7 @@ int CvodeBdf<D>::advance(double t, double dt, double& reached) {
 
 template <int D>
 std::string CvodeBdf<D>::flagName(int flag) const {
-    char* name = CVodeGetReturnFlagName(flag);
-    const std::string result = name;
-    std::free(name);
-    return result;
+    return takeSundialsString(CVodeGetReturnFlagName(flag));
 }
 
 template <int D>

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -17,6 +19,21 @@ SundialsTolerances readTolerances(const Dictionary& dict) {
     tolerances.relative = dict.getPositiveOrDefault("relativeTolerance", tolerances.relative);
     tolerances.absolute = dict.getPositiveOrDefault("absoluteTolerance", tolerances.absolute);
     return tolerances;
+}
+
+AdaptivityOptions readAdaptivity(const Dictionary& dict, const std::vector<std::string>& controllers) {
+    AdaptivityOptions options;
+    options.adaptive = dict.getOrDefault("adaptive", false);
+    if (!options.adaptive) return options;
+    options.tolerances = readTolerances(dict);
+    options.controllerName = dict.getOrDefault<std::string>("controller", options.controllerName);
+    static const std::vector<std::string> methods{"PID", "PI", "I", "explicitGustafsson", "implicitGustafsson", "imexGustafsson"};
+    const auto valid = std::find(controllers.begin(), controllers.end(), options.controllerName);
+    if (valid == controllers.end())
+        dict.fail("controller", fmt::format("unknown adaptivity controller '{}'; valid controller names are:\n    {}", options.controllerName,
+                                            fmt::join(controllers, "\n    ")));
+    options.controller = static_cast<int>(std::find(methods.begin(), methods.end(), options.controllerName) - methods.begin());
+    return options;
 }
 
 int readMaxKrylovDimension(const Dictionary& dict) {
@@ -75,9 +92,9 @@ N_Vector SundialsState<D>::absoluteTolerances(const FluidSystem<D>& system, doub
     absoluteTolerances_ = N_VClone(wrapped_);
     const double c0 = std::visit([](const auto& e) { return e.c0; }, system.models().eos);
     const double rho0 = std::visit([](const auto& e) { return e.rho0; }, system.models().eos);
-    const double dx = system.smoothingLength();  // the resolution scale the positions are resolved to
+    const double h = system.smoothingLength();  // the length the positions are resolved to
     for (sunindextype k = 0; k < N_VGetNumSubvectors_ManyVector(absoluteTolerances_); ++k) {
-        const double scale = k == 0 ? dx : k == 1 ? c0 : rho0;
+        const double scale = k == 0 ? h : k == 1 ? c0 : rho0;
         N_VConst(absolute * scale, N_VGetSubvector_ManyVector(absoluteTolerances_, k));
     }
     return absoluteTolerances_;
@@ -170,6 +187,12 @@ int SundialsState<D>::viscousJacobianTimes(FluidSystem<D>& system, double t, N_V
         lastFailure_ = error.what();
         return 1;
     }
+}
+
+std::string takeSundialsString(char* allocated) {
+    std::string result = allocated ? allocated : "(unnamed flag)";
+    std::free(allocated);
+    return result;
 }
 
 void failIntegration(const std::string& solver, const std::string& flagName, double t, const std::string& rightHandSideFailure) {

@@ -35,6 +35,17 @@ struct SundialsTolerances {
 
 SundialsTolerances readTolerances(const Dictionary& dict);
 
+// Fixed step, or adaptive with tolerances and ARKODE's adaptivity controller chosen by name
+// among `controllers`.
+struct AdaptivityOptions {
+    bool adaptive = false;
+    SundialsTolerances tolerances;
+    int controller = 0;  // ARKODE's adaptivity method: 0 PID, 1 PI, 2 I, 3 explicit, 4 implicit, 5 ImEx Gustafsson
+    std::string controllerName = "PID";
+};
+
+AdaptivityOptions readAdaptivity(const Dictionary& dict, const std::vector<std::string>& controllers);
+
 // The Krylov solver of the implicit integrators: SUNDIALS' GMRES, matrix-free.
 enum class JacobianTimesVector { DifferenceQuotient, VelocityBlock };
 struct KrylovOptions {
@@ -91,6 +102,9 @@ private:
     bool evaluatedValid_ = false;
     std::string lastFailure_;
 };
+
+// A string SUNDIALS allocated (a return flag's name), freed once copied.
+std::string takeSundialsString(char* allocated);
 
 // Throws the FatalError for a SUNDIALS failure: the solver's flag name and, when the
 // right-hand side failed, why.

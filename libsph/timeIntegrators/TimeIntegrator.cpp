@@ -70,8 +70,8 @@ TimeIntegratorRegistry<D> makeTimeIntegratorRegistry() {
 
     const std::vector<CoefficientDoc> adaptivityDocs{
         {"adaptive", "no", "yes: embedded error estimate sets the step (capped by the SPH step rules)"},
-        {"relativeTolerance", "1e-4", "relative tolerance (adaptive)"},
-        {"absoluteTolerance", "1e-6", "absolute tolerance, times h, c0, rho0 for positions, velocities, densities (adaptive)"},
+        {"relativeTolerance", "1e-4", "relative tolerance of the error test (adaptive) and, for arkodeIMEX, of the Newton test"},
+        {"absoluteTolerance", "1e-6", "absolute tolerance, times h, c0, rho0 for positions, velocities, densities (as relativeTolerance)"},
         {"controller", "PID", "adaptivity controller: PID, PI, I, explicitGustafsson (IMEX adds implicitGustafsson, imexGustafsson)"}};
     auto erkDocs = adaptivityDocs;
     erkDocs.insert(erkDocs.begin(), {"table", "ARKODE_BOGACKI_SHAMPINE_4_2_3", "SUNDIALS name of an explicit Butcher table"});
@@ -91,6 +91,7 @@ TimeIntegratorRegistry<D> makeTimeIntegratorRegistry() {
                  [](const Dictionary& dict) -> Pointer {
                      const std::string table = chooseName(dict, "table", "ARK324L2SA", ArkodeArkStepImex<D>::tableNames());
                      auto adaptivity = readAdaptivity(dict, {"PID", "PI", "I", "explicitGustafsson", "implicitGustafsson", "imexGustafsson"});
+                     if (!adaptivity.adaptive) adaptivity.tolerances = readTolerances(dict);  // the Newton convergence test
                      return std::make_unique<ArkodeArkStepImex<D>>(table, adaptivity, readKrylovOptions(dict));
                  });
     std::vector<CoefficientDoc> cvodeDocs{{"relativeTolerance", "1e-4", "relative tolerance"},

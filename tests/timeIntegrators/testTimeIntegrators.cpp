@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -60,6 +61,14 @@ struct OrderCase {
     int steps;  // coarse step count: error well above round-off at 2x the steps
 };
 
+// The test's name: the dictionary entries without their punctuation.
+std::string caseName(const ::testing::TestParamInfo<OrderCase>& info) {
+    std::string name;
+    for (char c : info.param.entries)
+        if (std::isalnum(static_cast<unsigned char>(c))) name += c;
+    return name;
+}
+
 class IntegratorOrder : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(IntegratorOrder, AtLeastTheNominalOrderOnAKnownSolution) {
@@ -79,7 +88,8 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorOrder,
                                            OrderCase{"type arkodeERK; table ARKODE_BOGACKI_SHAMPINE_4_2_3;", 3, 10},
                                            OrderCase{"type arkodeERK; table ARKODE_ZONNEVELD_5_3_4;", 4, 8},
                                            OrderCase{"type arkodeERK; table ARKODE_DORMAND_PRINCE_7_4_5;", 5, 8},
-                                           OrderCase{"type arkodeIMEX; table ARK324L2SA;", 3, 10}));
+                                           OrderCase{"type arkodeIMEX; table ARK324L2SA;", 3, 10}),
+                         caseName);
 
 TEST(IntegratorOrder, SecondOrderSchemesAreExactForConstantAccelerationWithVaryingSteps) {
     const Vec<2> x0(0.5, 2.0), v0(1.0, 3.0), g(0.0, -9.81);
@@ -167,7 +177,8 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, SelfConvergence,
                          ::testing::Values(OrderCase{"type symplectic;", 2, 40}, OrderCase{"type verlet; eulerEvery 1000000;", 2, 40},
                                            OrderCase{"type leapfrog;", 2, 40}, OrderCase{"type predictorCorrector;", 2, 40},
                                            OrderCase{"type arkodeERK; table ARKODE_BOGACKI_SHAMPINE_4_2_3;", 3, 40},
-                                           OrderCase{"type arkodeIMEX; table ARK324L2SA;", 3, 40}));
+                                           OrderCase{"type arkodeIMEX; table ARK324L2SA;", 3, 40}),
+                         caseName);
 
 TEST(IntegratorCounters, NativeIntegratorsCountTheirEvaluations) {
     for (const auto& [entries, perStep] : std::vector<std::pair<std::string, long>>{
