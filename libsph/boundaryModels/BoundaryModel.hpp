@@ -41,6 +41,10 @@ public:
     // Adds the fields the model reads or writes, once, before the first evaluation.
     virtual void addFields(FluidSystem<D>& /*system*/) {}
 
+    // Restart from a state the solver wrote after an evaluation: a model whose evaluation
+    // carries history (temporal smoothing) repeats that evaluation from the written fields.
+    virtual void resume(const FluidSystem<D>& /*system*/, std::size_t /*begin*/, std::size_t /*end*/) {}
+
     // Stage 3: sets the state of wall particles [begin, end) from the fluid at time t.
     virtual void updateWalls(FluidSystem<D>& /*system*/, std::size_t /*begin*/, std::size_t /*end*/, double /*t*/) {}
 

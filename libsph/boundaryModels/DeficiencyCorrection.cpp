@@ -61,6 +61,15 @@ void DeficiencyCorrection<D, Weighting>::addFields(FluidSystem<D>& system) {
 }
 
 template <int D, class Weighting>
+void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) {
+    // All zero: the state was written with another model on this patch; start afresh.
+    const auto& C = system.walls.scalar("correctionCoefficient");
+    repeatWrittenCoefficients_ = std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end),
+                                             [](double c) { return c != 0.0; });
+    firstEvaluation_ = !repeatWrittenCoefficients_;
+}
+
+template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin,
                                                        std::size_t end, double) {
     const std::size_t n = system.fluid.ownedCount();
@@ -74,8 +83,8 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, c
     const double* spacing = system.walls.scalar("spacing").data();
     double* C = system.walls.scalar("correctionCoefficient").data();
     const double influenceRadius = system.supportRadius();
-    const double lambda = firstEvaluation_ ? 1.0 : smoothing_;
-    firstEvaluation_ = false;
+    const double lambda = repeatWrittenCoefficients_ ? 0.0 : firstEvaluation_ ? 1.0 : smoothing_;
+    firstEvaluation_ = repeatWrittenCoefficients_ = false;
     weightSum_.assign(n, 0.0);
     blend_.assign(n, Vec<D>::Zero());
     const bool radial = radialDirection_;

@@ -47,6 +47,7 @@ public:
     bool needsUncorrectedAcceleration() const override { return true; }
     std::string describe() const override;
     void addFields(FluidSystem<D>& system) override;
+    void resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) override;
     void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t) override;
 
 private:
@@ -58,6 +59,7 @@ private:
     double sampleRadius_;  // radius of the sample (the kernel support for nearest-k)
     double smoothing_;
     bool firstEvaluation_ = true;
+    bool repeatWrittenCoefficients_ = false;  // restart: the written C_j already hold this evaluation's
     std::vector<double> weightSum_;  // per fluid particle, this evaluation only
     std::vector<Vec<D>> blend_;      // c_i, per fluid particle
 };

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <regex>
+
+#include <fmt/format.h>
 
 namespace sph {
 
@@ -40,6 +43,18 @@ TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const 
         controlDict.fail("startTime", "no time directory " + timeName(startTime) + " with a fluid.vtu; written times are:" + valid);
     }
     controlDict.fail("startFrom", "expected latestTime or startTime, found '" + startFrom + "'");
+}
+
+void removeIncompleteOutput(const std::filesystem::path& caseDirectory) {
+    static const std::regex leftover(R"(\..+\.(tmp|old)[0-9]+)");
+    std::error_code ec;
+    std::vector<std::filesystem::path> found;
+    for (const auto& item : std::filesystem::recursive_directory_iterator(caseDirectory, ec))
+        if (std::regex_match(item.path().filename().string(), leftover)) found.push_back(item.path());
+    for (const auto& path : found) {
+        fmt::print("Removing {}, left incomplete by an interrupted run\n", path.string());
+        std::filesystem::remove_all(path, ec);
+    }
 }
 
 Dictionary readCaseDictionary(const std::filesystem::path& caseDirectory, const std::string& relative) {

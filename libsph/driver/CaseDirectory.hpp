@@ -26,6 +26,10 @@ std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& case
 // The time directory controlDict's startFrom/startTime selects (FatalError if there is none).
 TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict);
 
+// Removes what a killed run left half-written (hidden temporaries ".<name>.tmp<pid>" and
+// ".<name>.old<pid>" of the atomic writes), naming each on the console.
+void removeIncompleteOutput(const std::filesystem::path& caseDirectory);
+
 // Reads <case>/<relative>, naming the case's file in every message.
 Dictionary readCaseDictionary(const std::filesystem::path& caseDirectory, const std::string& relative);
 

@@ -157,6 +157,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     // Time integration.
     const Dictionary& integratorDict = timeIntegration.subDict("integrator");
     setup.integrator = selectByType(makeTimeIntegratorRegistry<D>(), integratorDict, integratorDict);
+    setup.integratorType = integratorDict.get<std::string>("type");
     setup.courant = timeIntegration.getPositiveOrDefault("courant", 0.2);
     setup.maxDeltaT = timeIntegration.getPositiveOrDefault("maxDeltaT", std::numeric_limits<double>::infinity());
     setup.fixedDeltaT = timeIntegration.getPositiveOrDefault("fixedDeltaT", 0.0);

@@ -17,6 +17,7 @@ template <int D>
 struct CaseSetup {
     std::unique_ptr<FluidSystem<D>> system;
     std::unique_ptr<TimeIntegrator<D>> integrator;
+    std::string integratorType;  // its name in system/timeIntegration
     double rho0 = 0.0;
     double courant = 0.2;
     double maxDeltaT = 0.0;    // +inf when not given

@@ -13,6 +13,7 @@ public:
     Progress(double startTime, double endTime, std::size_t particles);
     void update(long step, double t, double dt);
     void finish();  // ends the in-place line
+    void setEndTime(double endTime) { endTime_ = endTime; }
     double elapsedSeconds() const;
 
 private:

@@ -3,7 +3,11 @@
 #include "driver/CaseDirectory.hpp"
 #include "driver/FluidSetup.hpp"
 #include "driver/Progress.hpp"
+#include "driver/RestartState.hpp"
+#include "driver/RunControls.hpp"
+#include "driver/StopRequest.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "io/AtomicFile.hpp"
 #include "io/ParticleCsv.hpp"
 #include "io/ParticleFile.hpp"
 #include "io/PvdCollection.hpp"
@@ -80,14 +84,18 @@ template <int D>
 void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
+    TimeIntegrator<D>& integrator = *setup.integrator;
+    // The exact time from the state file: a directory name holds only its first digits.
+    const double startTime = setup.header.time;
 
-    const double endTime = controlDict.get<double>("endTime");
-    const double writeInterval = controlDict.getPositive("writeInterval");
+    RunControls controls = RunControls::read(controlDict);
     const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
-    if (mode == RunMode::TimeLoop && !(endTime > start.time)) controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", start.time, endTime));
+    ControlDictWatcher watcher(caseDirectory / "system/controlDict", controlDict.getOrDefault("runTimeModifiable", true));
+    if (mode == RunMode::TimeLoop && !(controls.endTime > startTime))
+        controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
     for (const Patch<D>& patch : system.patches)
-        if (patch.motion) patch.motion->checkCovers(start.time, endTime);
-    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, start.time, setup.rho0);
+        if (patch.motion) patch.motion->checkCovers(startTime, controls.endTime);
+    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, startTime, setup.rho0);
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
 
@@ -97,9 +105,9 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
     StateHeader header = setup.header;
     const auto writeState = [&](const std::filesystem::path& directory, double t, long step) {
-        std::filesystem::create_directories(directory);
         header.time = t;
         header.step = step;
+        collectRestartState(system, integrator, setup.integratorType, header);
         StateHeader wallHeader = header;
         wallHeader.patchNames = setup.patchNames;
         writeParticleFile(directory / "fluid.vtu", system.fluid, header);
@@ -108,20 +116,24 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
     const auto write = [&](double t, long step) {
         auto timer = system.timers.time(Stage::Output);
         const std::string name = timeName(t);
-        writeState(caseDirectory / name, t, step);
-        if (writeCsv) {
-            writeParticleCsv(caseDirectory / name / "fluid.csv", system.fluid);
-            writeParticleCsv(caseDirectory / name / "walls.csv", system.walls);
-        }
+        writeDirectoryAtomically(caseDirectory / name, [&](const std::filesystem::path& directory) {
+            writeState(directory, t, step);
+            if (writeCsv) {
+                writeParticleCsv(directory / "fluid.csv", system.fluid);
+                writeParticleCsv(directory / "walls.csv", system.walls);
+            }
+        });
         pvd.add(t, {name + "/fluid.vtu", name + "/walls.vtu"});
     };
     if (mode == RunMode::RatesOnly) {
-        system.evaluateRates(start.time);
-        const auto directory = caseDirectory / "postProcessing" / "rates" / timeName(start.time);
-        writeState(directory, start.time, header.step);
-        writeParticleCsv(directory / "fluid.csv", system.fluid);
-        writeParticleCsv(directory / "walls.csv", system.walls);
-        fmt::print("\nWrote the right-hand side at t = {:g} to {}\n", start.time, directory.string());
+        system.evaluateRates(startTime);
+        const auto directory = caseDirectory / "postProcessing" / "rates" / timeName(startTime);
+        writeDirectoryAtomically(directory, [&](const std::filesystem::path& temporary) {
+            writeState(temporary, startTime, header.step);
+            writeParticleCsv(temporary / "fluid.csv", system.fluid);
+            writeParticleCsv(temporary / "walls.csv", system.walls);
+        });
+        fmt::print("\nWrote the right-hand side at t = {:g} to {}\n", startTime, directory.string());
         return;
     }
     const auto runFunctionObjects = [&](double t, bool force) {
@@ -134,39 +146,55 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         }
     };
 
-    fmt::print("\nStarting time loop at t = {:g} (from {}), endTime {:g}, writeInterval {:g}\n\n", start.time, start.path.string(), endTime,
-               writeInterval);
-    double t = start.time;
+    fmt::print("\nStarting time loop at t = {:g} (from {}), endTime {:g}, writeInterval {:g}\n\n", startTime, start.path.string(), controls.endTime,
+               controls.writeInterval);
+    double t = startTime;
     long step = header.step;
-    system.evaluateRates(t);
+    restoreRestartState(system, integrator, setup.integratorType, setup.header, t, (start.path / "fluid.vtu").string());
     runFunctionObjects(t, true);
-    Progress progress(t, endTime, system.fluid.size());
-    double nextWrite = start.time + writeInterval;
+    Progress progress(t, controls.endTime, system.fluid.size());
+    double nextWrite = controls.nextWriteAfter(t);
     const long firstStep = step;
     double dt = 0.0;
-    const double timeTolerance = 1e-9 * writeInterval;
-    TimeIntegrator<D>& integrator = *setup.integrator;
-    while (t < endTime - timeTolerance) {
-        if (integrator.allowsReordering() && (step - firstStep) % stepsBetweenCellSorts == 0) {
+    const StopRequest stopRequest;
+    while (true) {
+        const double timeTolerance = 1e-9 * controls.writeInterval;
+        if (t >= controls.endTime - timeTolerance) break;
+        // Counted from the run's first step, not this invocation's, so a restart sorts when the uninterrupted run did.
+        if (integrator.allowsReordering() && step % stepsBetweenCellSorts == 0) {
             system.sortFluidByCell();
             integrator.stateChangedOutside();
         }
         dt = setup.fixedDeltaT > 0.0 ? setup.fixedDeltaT
                                      : std::min(system.stableTimeStep(setup.courant, !integrator.viscosityImplicit()), setup.maxDeltaT);
         // Land on write times and on endTime exactly.
-        const double target = std::min(nextWrite, endTime);
+        const double target = std::min(nextWrite, controls.endTime);
         if (t + dt > target - timeTolerance) dt = target - t;
         const double taken = integrator.step(system, t, dt);
         if (system.wrapPeriodic()) integrator.stateChangedOutside();
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;
         checkState(system, step, t, setup.rho0);
-        runFunctionObjects(t, t >= endTime - timeTolerance);
-        if (t >= nextWrite - timeTolerance || t >= endTime - timeTolerance) {
+        const bool last = t >= controls.endTime - timeTolerance;
+        if (const int signal = stopRequest.signal(); signal != 0 && !last) {
+            runFunctionObjects(t, true);
             write(t, step);
-            while (nextWrite <= t + timeTolerance) nextWrite += writeInterval;
+            progress.finish();
+            fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}; rerun to continue from it\n", signalName(signal), step,
+                       t, (caseDirectory / timeName(t)).string());
+            break;
+        }
+        runFunctionObjects(t, last);
+        if (t >= nextWrite - timeTolerance || last) {
+            write(t, step);
+            nextWrite = controls.nextWriteAfter(t);
         }
         progress.update(step, t, taken);
+        if (const auto changed = watcher.changed(controls, t)) {
+            controls = *changed;
+            nextWrite = controls.nextWriteAfter(t);
+            progress.setEndTime(controls.endTime);
+        }
     }
     progress.finish();
 
@@ -200,6 +228,7 @@ void runCase(const std::filesystem::path& caseDirectory, RunMode mode) {
     if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
     const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
     controlDict.findEntry("application");  // informational, as in OpenFOAM
+    if (mode == RunMode::TimeLoop) removeIncompleteOutput(caseDirectory);
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
     const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
     switch (dimension) {

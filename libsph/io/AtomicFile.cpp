@@ -7,17 +7,55 @@
 
 namespace sph {
 
+namespace {
+
+std::filesystem::path hiddenSibling(const std::filesystem::path& path, const std::string& tag) {
+    std::filesystem::path sibling = path;
+    sibling.replace_filename("." + path.filename().string() + "." + tag + std::to_string(::getpid()));
+    return sibling;
+}
+
+void throwOnError(const std::error_code& ec, const std::string& what) {
+    if (ec) throw FatalError("error: cannot " + what + ": " + ec.message());
+}
+
+}  // namespace
+
 void writeAtomically(const std::filesystem::path& file, const std::function<void(const std::filesystem::path&)>& write) {
-    std::filesystem::path temporary = file;
-    temporary.replace_filename("." + file.filename().string() + ".tmp" + std::to_string(::getpid()));
+    const std::filesystem::path temporary = hiddenSibling(file, "tmp");
     try {
         write(temporary);
         std::error_code ec;
         std::filesystem::rename(temporary, file, ec);
-        if (ec) throw FatalError("error: cannot rename '" + temporary.string() + "' to '" + file.string() + "': " + ec.message());
+        throwOnError(ec, "rename '" + temporary.string() + "' to '" + file.string() + "'");
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
+        throw;
+    }
+}
+
+
+void writeDirectoryAtomically(const std::filesystem::path& directory, const std::function<void(const std::filesystem::path&)>& write) {
+    const std::filesystem::path temporary = hiddenSibling(directory, "tmp");
+    const std::filesystem::path replaced = hiddenSibling(directory, "old");
+    std::error_code ec;
+    std::filesystem::remove_all(temporary, ec);
+    std::filesystem::create_directories(temporary, ec);
+    throwOnError(ec, "create the directory '" + temporary.string() + "' (directory not writable?)");
+    try {
+        write(temporary);
+        const bool exists = std::filesystem::exists(directory, ec);
+        if (exists) {
+            std::filesystem::rename(directory, replaced, ec);
+            throwOnError(ec, "move the old '" + directory.string() + "' aside");
+        }
+        std::filesystem::rename(temporary, directory, ec);
+        throwOnError(ec, "rename '" + temporary.string() + "' to '" + directory.string() + "'");
+        if (exists) std::filesystem::remove_all(replaced, ec);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove_all(temporary, ignored);
         throw;
     }
 }

@@ -17,6 +17,8 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <string_view>
+
 namespace sph {
 
 namespace {
@@ -41,6 +43,8 @@ struct VtkErrors {
         });
     }
 };
+
+constexpr std::string_view restartPrefix = "restart:";
 
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
@@ -84,6 +88,12 @@ StateHeader headerOf(vtkUnstructuredGrid* grid, const std::filesystem::path& fil
     header.domainMin = required("domainMin", static_cast<std::size_t>(header.dimension));
     header.domainMax = required("domainMax", static_cast<std::size_t>(header.dimension));
     header.periodic = numbers(data, "periodic");
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+        const char* name = data->GetArrayName(a);
+        if (name && std::string_view(name).starts_with(restartPrefix)) header.restart[name + restartPrefix.size()] = numbers(data, name);
+    }
+    if (auto* integrator = vtkStringArray::SafeDownCast(data->GetAbstractArray("integrator")); integrator && integrator->GetNumberOfValues() == 1)
+        header.integrator = integrator->GetValue(0);
     if (auto* names = vtkStringArray::SafeDownCast(data->GetAbstractArray("patchNames")))
         for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i) header.patchNames.push_back(names->GetValue(i));
     return header;
@@ -148,12 +158,15 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
     data->AddArray(fieldArray<vtkDoubleArray>("domainMin", header.domainMin));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMax", header.domainMax));
     if (!header.periodic.empty()) data->AddArray(fieldArray<vtkDoubleArray>("periodic", header.periodic));
-    if (!header.patchNames.empty()) {
-        auto names = vtkSmartPointer<vtkStringArray>::New();
-        names->SetName("patchNames");
-        for (const std::string& patch : header.patchNames) names->InsertNextValue(patch);
-        data->AddArray(names);
-    }
+    for (const auto& [key, values] : header.restart) data->AddArray(fieldArray<vtkDoubleArray>(std::string(restartPrefix) + key, values));
+    const auto addStrings = [&](const char* name, const std::vector<std::string>& values) {
+        auto strings = vtkSmartPointer<vtkStringArray>::New();
+        strings->SetName(name);
+        for (const std::string& value : values) strings->InsertNextValue(value);
+        data->AddArray(strings);
+    };
+    if (!header.integrator.empty()) addStrings("integrator", {header.integrator});
+    if (!header.patchNames.empty()) addStrings("patchNames", header.patchNames);
 
     writeAtomically(file, [&](const std::filesystem::path& temporary) {
         auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();

@@ -2,8 +2,10 @@
 // one vertex cell per particle, so ParaView opens them as they are and the solver restarts
 // from them exactly (every field is Float64). Point data: one array per written field,
 // 3-component arrays for vectors (zero-padded below 3D), "id" for global ids. Field data:
-// TimeValue, step, dimension, spacing, domainMin, domainMax, periodic (when any direction is)
-// and, for walls, patchNames.
+// TimeValue, step, dimension, spacing, domainMin, domainMax, periodic (when any direction is),
+// for walls patchNames, and for a state the solver wrote, "integrator" (the type that wrote it)
+// and "restart:<key>" arrays: what the integrator and free bodies carry from step to step
+// besides particle fields, so a restart continues the run exactly.
 // Files are written to a temporary name in the same directory and renamed, so a reader never
 // sees a half-written file.
 #pragma once
@@ -11,6 +13,7 @@
 #include "core/ParticleSet.hpp"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +27,8 @@ struct StateHeader {
     std::vector<double> domainMin, domainMax;
     std::vector<double> periodic;  // 1 per periodic direction, 0 otherwise; empty: none
     std::vector<std::string> patchNames;
+    std::string integrator;
+    std::map<std::string, std::vector<double>> restart;
 };
 
 template <int D>

@@ -27,6 +27,8 @@ public:
     void setLoads(const Vec<2>& force, double torque, const Vec<2>& gravity, double t) override;
     void predict(double halfDt) override;
     void correct(double dt) override;
+    std::vector<double> savedState() const override;
+    void restore(const std::vector<double>& saved, const std::string& source) override;
 
     struct State {
         Vec<2> position, velocity;
@@ -48,8 +50,13 @@ private:
         Vec<2> acceleration;
         double angularAcceleration;
     };
-    Sample last_{0.0, Vec<2>::Zero(), 0.0}, previous_{0.0, Vec<2>::Zero(), 0.0};
-    int samples_ = 0;
+    struct LoadHistory {
+        Sample last{0.0, Vec<2>::Zero(), 0.0}, previous{0.0, Vec<2>::Zero(), 0.0};
+        int samples = 0;
+    };
+    LoadHistory loads_;
+    // The history as the last evaluation found it: a restart repeats that evaluation from it.
+    LoadHistory beforeLastLoads_;
 };
 
 }  // namespace sph

@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sph {
 
@@ -42,6 +43,12 @@ public:
     virtual void setLoads(const Vec<D>& /*force*/, double /*torque*/, const Vec<D>& /*gravity*/, double /*t*/) {}
     virtual void predict(double /*halfDt*/) {}
     virtual void correct(double /*dt*/) {}
+
+    // Restart: a free body's integrated state, written with each state and restored before the
+    // first step of a restarted run (prescribed motions depend on time alone and keep none).
+    virtual std::vector<double> savedState() const { return {}; }
+    // `source` names the file for the message when `saved` is not a state of this motion.
+    virtual void restore(const std::vector<double>& /*saved*/, const std::string& /*source*/) {}
 };
 
 // Factory argument: the `motion` dictionary and the case directory (for tables).

@@ -19,7 +19,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
       fluidCells_(domainMin, domainMax, supportRadius_, periodic), wallCells_(domainMin, domainMax, supportRadius_, periodic) {
     fluid.addScalar("pressure", 0.0);
     fluid.addVector("acceleration", Vec<D>::Zero());
-    if (continuity()) fluid.addScalar("densityRate", 0.0, false);
+    if (continuity()) fluid.addScalar("densityRate", 0.0);
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     walls.addVector("velocity", Vec<D>::Zero(), false);
@@ -37,12 +37,13 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         keepsUncorrectedAcceleration_ = keepsUncorrectedAcceleration_ || patch.model->needsUncorrectedAcceleration();
         patch.model->addFields(*this);
     }
-    if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0, false);
+    if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0);
     if (keepsUncorrectedAcceleration_) fluid.addVector("uncorrectedAcceleration", Vec<D>::Zero());
     for (const Patch<D>& patch : patches) wallsMove_ = wallsMove_ || patch.motion != nullptr;
     if (wallsMove_) {
-        walls.addVector("initialPosition", Vec<D>::Zero(), false) = walls.position;
-        walls.addVector("initialNormal", Vec<D>::Zero(), false) = walls.vector("normal");
+        // Motions are given from the initial configuration: written with the state, so a restart keeps it.
+        if (!walls.hasVector("initialPosition")) walls.addVector("initialPosition", Vec<D>::Zero()) = walls.position;
+        if (!walls.hasVector("initialNormal")) walls.addVector("initialNormal", Vec<D>::Zero()) = walls.vector("normal");
         walls.addVector("acceleration", Vec<D>::Zero(), false);
     }
     wallCells_.build(walls.position, 0, wallParticleEnd_);

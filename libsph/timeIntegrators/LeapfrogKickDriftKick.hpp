@@ -5,7 +5,8 @@
 //   v^{n+1}   = v^{n+1/2} + dt/2 a^{n+1},  rho^{n+1} = rho^{n+1/2} + dt/2 drho^{n+1}   (kick)
 // Viscosity depends on velocity and pressure on density, so the evaluation takes velocity and
 // density predicted to the end of the step, as Springel does for SPH; evaluating them at the
-// half step instead lags them by dt/2 and makes the scheme first order.
+// half step instead lags them by dt/2 and makes the scheme first order. The rates a step ends
+// with are those of the predicted state; a restart takes them from the written state file.
 // Reference: V. Springel, Mon. Not. R. Astron. Soc. 364 (2005) 1105-1134, Sec. 4.
 // Example (system/timeIntegration):   integrator { type leapfrog; }
 #pragma once
@@ -21,6 +22,7 @@ template <int D>
 class LeapfrogKickDriftKick : public TimeIntegrator<D> {
 public:
     std::string describe() const override { return "leapfrog (kick-drift-kick)"; }
+    bool carriesPredictedRates() const override { return true; }
 
 protected:
     double takeStep(FluidSystem<D>& system, double t, double dt) override;

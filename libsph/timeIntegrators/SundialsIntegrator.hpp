@@ -7,12 +7,20 @@
 #include "timeIntegrators/SundialsState.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
 
+#include <cmath>
+
 namespace sph {
 
 template <int D>
 class SundialsIntegrator : public TimeIntegrator<D> {
 public:
     void stateChangedOutside() override { restart_ = true; }
+    // A restarted run starts from the step size reached; the error controller's history and
+    // CVODE's BDF history are rebuilt, so it agrees with the uninterrupted run to the tolerances.
+    std::vector<double> savedState() const override { return {lastStep_}; }
+    void resume(const FluidSystem<D>&, const std::vector<double>& saved) override {
+        if (saved.size() == 1 && saved[0] > 0.0 && std::isfinite(saved[0])) lastStep_ = saved[0];
+    }
     std::vector<std::pair<std::string, long>> counters() const override;
 
 protected:

@@ -36,6 +36,15 @@ public:
     // an integrator that keeps state of its own restarts from the system's.
     virtual void stateChangedOutside() {}
 
+    // Restart: what the integrator carries from step to step besides particle fields, written
+    // with each state, and handed back before the first step of a restarted run (an empty
+    // `saved`: the state was written by another integrator, or by generateParticles).
+    virtual std::vector<double> savedState() const { return {}; }
+    virtual void resume(const FluidSystem<D>& /*system*/, const std::vector<double>& /*saved*/) {}
+    // True when the rates it ends a step with were evaluated at a predicted state, not the one
+    // written: a restart then keeps the written rates instead of re-evaluating them.
+    virtual bool carriesPredictedRates() const { return false; }
+
     // Capabilities the driver and the case reader check.
     virtual bool viscosityImplicit() const { return false; }  // no explicit viscous step limit
     virtual bool allowsReordering() const { return true; }    // false: history that reordering would break

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -11,10 +12,10 @@ namespace sph::test {
 
 inline std::filesystem::path sourceDirectory() { return SPHKIT_SOURCE_DIR; }
 
-// A new, empty directory named after the running test.
-inline std::filesystem::path freshDirectory() {
+// A new, empty directory named after the running test (and `variant`, for a test that needs several).
+inline std::filesystem::path freshDirectory(const std::string& variant = "") {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / info->test_suite_name() / info->name();
+    const std::filesystem::path dir = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / info->test_suite_name() / info->name() / variant;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
@@ -26,8 +27,8 @@ inline void writeFile(const std::filesystem::path& file, const std::string& text
 }
 
 // Copies a shipped case's dictionaries (system/, constant/) into a fresh directory.
-inline std::filesystem::path copyCase(const std::string& name) {
-    const std::filesystem::path dir = freshDirectory();
+inline std::filesystem::path copyCase(const std::string& name, const std::string& variant = "") {
+    const std::filesystem::path dir = freshDirectory(variant);
     for (const char* part : {"system", "constant"})
         std::filesystem::copy(sourceDirectory() / "cases" / name / part, dir / part, std::filesystem::copy_options::recursive);
     return dir;
@@ -40,6 +41,16 @@ inline void replaceInFile(const std::filesystem::path& file, const std::string& 
     const auto at = text.find(from);
     ASSERT_NE(at, std::string::npos) << "'" << from << "' not found in " << file;
     text.replace(at, from.size(), to);
+    std::ofstream(file) << text;
+}
+
+// Sets `keyword value;` on the line where the keyword starts an entry.
+inline void setEntry(const std::filesystem::path& file, const std::string& keyword, const std::string& value) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::regex entry("(^|\\n)([ \\t]*)" + keyword + "[ \\t]+[^;\\n]*;");
+    ASSERT_TRUE(std::regex_search(text, entry)) << "no entry '" << keyword << "' in " << file;
+    text = std::regex_replace(text, entry, "$1$2" + keyword + " " + value + ";", std::regex_constants::format_first_only);
     std::ofstream(file) << text;
 }
 
