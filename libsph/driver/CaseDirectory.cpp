@@ -11,6 +11,12 @@
 
 namespace sph {
 
+std::string caseName(const std::filesystem::path& caseDirectory) {
+    std::filesystem::path normal = std::filesystem::absolute(caseDirectory).lexically_normal();
+    if (!normal.has_filename()) normal = normal.parent_path();
+    return normal.filename().string();
+}
+
 std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory) {
     std::vector<TimeDirectory> times;
     std::error_code ec;

@@ -20,6 +20,9 @@ struct TimeDirectory {
     std::filesystem::path path;
 };
 
+// The case's name: its directory's, also when given as "." or with a trailing slash.
+std::string caseName(const std::filesystem::path& caseDirectory);
+
 // Time directories holding a complete state (fluid.vtu), in increasing time.
 std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory);
 

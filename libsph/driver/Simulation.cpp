@@ -99,7 +99,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
 
-    PvdCollection pvd(caseDirectory / (std::filesystem::absolute(caseDirectory).lexically_normal().filename().string() + ".pvd"));
+    PvdCollection pvd(caseDirectory / (caseName(caseDirectory) + ".pvd"));
     for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
         if (written.time <= start.time) pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
 

@@ -10,7 +10,7 @@ namespace sph {
 template <int D>
 BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
     if constexpr (D != 2) dict.fail("type", "bodyMotion reports 2D free bodies only");
-    out_ = openTimeSeries(context.outputDirectory, "body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
+    out_ = TimeSeriesFile(context.outputDirectory, "body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
 }
 
 template <int D>
@@ -21,9 +21,8 @@ void BodyMotion<D>::execute(const FluidSystem<D>& system, double t) {
             if (patch.name == patch_) body = dynamic_cast<const FreeBody2D*>(patch.motion.get());
         if (!body) dict_->fail("patch", "'" + patch_ + "' is not a patch whose motion is freeBody");
         const auto& s = body->state();
-        out_ << fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}\n", t, s.position.x(), s.position.y(), s.angle,
-                            s.velocity.x(), s.velocity.y(), s.angularVelocity, body->force().x(), body->force().y(), body->torque())
-             << std::flush;
+        out_.append(fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}", t, s.position.x(), s.position.y(), s.angle,
+                            s.velocity.x(), s.velocity.y(), s.angularVelocity, body->force().x(), body->force().y(), body->torque()));
     }
 }
 

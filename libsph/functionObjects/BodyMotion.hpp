@@ -6,8 +6,8 @@
 #pragma once
 
 #include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
 
-#include <fstream>
 
 namespace sph {
 
@@ -21,7 +21,7 @@ public:
 private:
     std::string patch_;
     const Dictionary* dict_;
-    std::ofstream out_;
+    TimeSeriesFile out_;
 };
 
 }  // namespace sph

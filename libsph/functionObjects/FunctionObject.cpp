@@ -6,15 +6,6 @@
 
 namespace sph {
 
-std::ofstream openTimeSeries(const std::filesystem::path& directory, const std::string& file, const std::string& header) {
-    std::error_code ec;
-    std::filesystem::create_directories(directory, ec);
-    std::ofstream out(directory / file);
-    if (!out) throw FatalError("error: cannot write '" + (directory / file).string() + "' (directory not writable?)");
-    out << header << "\n";
-    return out;
-}
-
 template <int D>
 FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
     const CoefficientDoc interval{"executeInterval", "0", "simulated time between executions (0: every step)"};

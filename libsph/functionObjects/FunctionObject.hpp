@@ -11,7 +11,6 @@
 #include "io/Dictionary.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
@@ -34,9 +33,6 @@ public:
     // A closing line for the run log (an error figure, say); empty for none.
     virtual std::string summary() const { return {}; }
 };
-
-// Opens <directory>/<file> for a time series and writes its header line (created as needed).
-std::ofstream openTimeSeries(const std::filesystem::path& directory, const std::string& file, const std::string& header);
 
 template <int D>
 using FunctionObjectRegistry = Registry<std::unique_ptr<FunctionObject<D>>, const Dictionary&, const FunctionObjectContext&>;

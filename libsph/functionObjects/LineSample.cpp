@@ -18,7 +18,7 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext& c
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) freeSurfaceHeight_ = reference->get<double>("freeSurfaceHeight");
     std::filesystem::create_directories(directory_);
     if (freeSurfaceHeight_)
-        errorOut_ = openTimeSeries(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
+        errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>
@@ -84,7 +84,7 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
         time_ = t;
         l2_ = scale > 0.0 ? std::sqrt(sum2 / points_) / scale : 0.0;
         max_ = scale > 0.0 ? maxError / scale : 0.0;
-        errorOut_ << fmt::format("{:.9g} {:.6e} {:.6e}\n", t, l2_, max_) << std::flush;
+        errorOut_.append(fmt::format("{:.9g} {:.6e} {:.6e}", t, l2_, max_));
     }
 }
 

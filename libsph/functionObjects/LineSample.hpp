@@ -14,8 +14,8 @@
 
 #include "core/Vector.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
 
-#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -43,7 +43,7 @@ private:
     std::optional<double> freeSurfaceHeight_;
     double rho0_;
     std::filesystem::path directory_;
-    std::ofstream errorOut_;
+    TimeSeriesFile errorOut_;
     double l2_ = 0.0, max_ = 0.0, time_ = 0.0;
 };
 

@@ -12,7 +12,7 @@ SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext& c
     : origin_(dict.getVector<D>("origin")), direction_(dict.getVector<D>("direction")) {
     if (!(direction_.norm() > 0.0)) dict.fail("direction", "must not be the zero vector");
     direction_.normalize();
-    out_ = openTimeSeries(context.outputDirectory, "surgeFront.dat", "# time front");
+    out_ = TimeSeriesFile(context.outputDirectory, "surgeFront.dat", "# time front");
 }
 
 template <int D>
@@ -25,7 +25,7 @@ void SurgeFront<D>::execute(const FluidSystem<D>& system, double t) {
     double front = -std::numeric_limits<double>::infinity();
     const auto& x = system.fluid.position;
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) front = std::max(front, (x[i] - origin_).dot(direction_));
-    out_ << fmt::format("{:.9g} {:.9g}\n", t, front) << std::flush;
+    out_.append(fmt::format("{:.9g} {:.9g}", t, front));
 }
 
 template class SurgeFront<1>;

@@ -7,8 +7,8 @@
 
 #include "core/Vector.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
 
-#include <fstream>
 
 namespace sph {
 
@@ -21,7 +21,7 @@ public:
 
 private:
     Vec<D> origin_, direction_;
-    std::ofstream out_;
+    TimeSeriesFile out_;
 };
 
 }  // namespace sph

@@ -53,10 +53,10 @@ void writeDirectoryAtomically(const std::filesystem::path& directory, const std:
         std::filesystem::rename(temporary, directory, ec);
         throwOnError(ec, "rename '" + temporary.string() + "' to '" + directory.string() + "'");
         if (exists) std::filesystem::remove_all(replaced, ec);
-    } catch (...) {
+    } catch (const FatalError& error) {
         std::error_code ignored;
         std::filesystem::remove_all(temporary, ignored);
-        throw;
+        throw FatalError(std::string(error.what()) + "\n    while writing '" + directory.string() + "'; what was written before it is complete");
     }
 }
 

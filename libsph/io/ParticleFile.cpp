@@ -6,6 +6,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
@@ -177,7 +178,7 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();
         writer->SetCompressorTypeToZLib();
-        if (writer->Write() != 1 || !errors.text.empty())
+        if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || !errors.text.empty())
             throw FatalError("error: cannot write particle file '" + file.string() + "'" + (errors.text.empty() ? "" : ": " + firstLine(errors.text)));
     });
 }

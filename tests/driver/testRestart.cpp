@@ -5,21 +5,17 @@
 #include "generation/ParticleGenerator.hpp"
 #include "io/ParticleFile.hpp"
 #include "support/CaseFixture.hpp"
+#include "support/SolverProcess.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <csignal>
-#include <fcntl.h>
 #include <fstream>
 #include <map>
 #include <random>
 #include <regex>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <thread>
-
-extern char** environ;
 
 using namespace sph::test;
 
@@ -150,33 +146,6 @@ TEST(Restart, AdaptiveArkodeContinuesWithinItsTolerance) {
 }
 
 namespace {
-
-// wcsph on `dir` in a child process, its output appended to dir/log.
-pid_t startSolver(const std::filesystem::path& dir) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    const std::string log = (dir / "log").string();
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    std::string executable = SPHKIT_WCSPH_EXECUTABLE, caseOption = "-case", caseDirectory = dir.string();
-    char* argv[] = {executable.data(), caseOption.data(), caseDirectory.data(), nullptr};
-    pid_t pid = 0;
-    const int error = posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
-    EXPECT_EQ(error, 0) << "cannot start " << executable;
-    return pid;
-}
-
-int waitForExit(pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return status;
-}
-
-std::string readText(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 // Every time the .pvd lists, with both its files complete and readable; returns the times.
 std::vector<double> checkCollection(const std::filesystem::path& dir) {

@@ -15,7 +15,8 @@ inline std::filesystem::path sourceDirectory() { return SPHKIT_SOURCE_DIR; }
 // A new, empty directory named after the running test (and `variant`, for a test that needs several).
 inline std::filesystem::path freshDirectory(const std::string& variant = "") {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / info->test_suite_name() / info->name() / variant;
+    std::filesystem::path dir = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / info->test_suite_name() / info->name();
+    if (!variant.empty()) dir /= variant;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
