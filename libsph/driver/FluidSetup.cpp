@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -38,6 +39,24 @@ void requireFields(const ParticleSet<D>& set, const std::filesystem::path& file,
         if (!set.hasInteger(f)) missing(f);
 }
 
+// A corrupt or hand-edited state: every value must be a finite number, masses and densities positive.
+template <int D>
+void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& file) {
+    const auto reject = [&](std::size_t i, const std::string& what) {
+        throw FatalError(fmt::format("error: particle file '{}': particle id {} has {} (a corrupt state file?)", file.string(), set.globalId[i], what));
+    };
+    for (std::size_t i = 0; i < set.size(); ++i)
+        if (!set.position[i].allFinite()) reject(i, "a non-finite position");
+    for (const auto& [name, field] : set.scalars())
+        for (std::size_t i = 0; i < field.values.size(); ++i) {
+            if (!std::isfinite(field.values[i])) reject(i, fmt::format("a non-finite {}", name));
+            if ((name == "mass" || name == "density") && !(field.values[i] > 0.0)) reject(i, fmt::format("{} {:g}, not positive", name, field.values[i]));
+        }
+    for (const auto& [name, field] : set.vectors())
+        for (std::size_t i = 0; i < field.values.size(); ++i)
+            if (!field.values[i].allFinite()) reject(i, fmt::format("a non-finite {}", name));
+}
+
 }  // namespace
 
 template <int D>
@@ -56,6 +75,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     ParticleSet<D> walls = readParticleFile<D>(wallFile, "walls", wallHeader);
     requireFields(fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
     requireFields(walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
+    requireValidValues(fluid, fluidFile);
+    requireValidValues(walls, wallFile);
     if (fluid.size() == 0)
         throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
     const double dx = setup.header.spacing;

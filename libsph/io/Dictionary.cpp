@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -117,6 +118,9 @@ std::string readFile(const std::filesystem::path& file) {
         throw FatalError("error: cannot open dictionary '" + file.string() + "': file not found");
     if (std::filesystem::is_directory(file, ec))
         throw FatalError("error: cannot open dictionary '" + file.string() + "': it is a directory");
+    // A device or pipe (an #include "/dev/zero") would never end.
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw FatalError("error: cannot open dictionary '" + file.string() + "': not a regular file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw FatalError("error: cannot open dictionary '" + file.string() + "': permission denied or unreadable");
     std::ostringstream contents;
@@ -453,7 +457,8 @@ int Dictionary::get<int>(const std::string& keyword) const {
     const Entry& e = entry(keyword);
     const Token& t = singleToken(e, name_, "an integer");
     const double value = numberOf(t, keyword, name_);
-    if (value != static_cast<double>(static_cast<long long>(value)) || value > 2147483647.0 || value < -2147483648.0)
+    // Range first: converting a double outside the integer range is undefined behaviour.
+    if (!(value >= -2147483648.0 && value <= 2147483647.0) || value != std::trunc(value))
         throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected an integer, found " + t.describe());
     return static_cast<int>(value);
 }

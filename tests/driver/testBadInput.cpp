@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace sph::test;
 
 namespace {
@@ -140,6 +142,60 @@ TEST(BadInput, EmptyFluidStateIsRejectedBySolver) {
     fluid.resize(0);
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
     expectContains(failureOf(dir, false), "error: '" + (dir / "0/fluid.vtu").string() + "' holds no fluid particles");
+}
+
+TEST(BadInput, NonFiniteOrNonPositiveStateValues) {
+    const auto dir = copyCase("damBreak2D");
+    sph::generateParticles(dir, true);
+    sph::StateHeader header;
+    const auto original = sph::readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
+    auto fluid = original;
+    fluid.scalar("density")[7] = std::numeric_limits<double>::quiet_NaN();
+    sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "error: particle file '" + (dir / "0/fluid.vtu").string() +
+                                              "': particle id " + std::to_string(fluid.globalId[7]) + " has a non-finite density (a corrupt state file?)");
+    fluid = original;
+    fluid.scalar("mass")[3] = -1.0;
+    sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "has mass -1, not positive (a corrupt state file?)");
+}
+
+TEST(BadInput, TruncatedStateFile) {
+    // A state cut short (copied from a full disk by hand, say) reads as an error, not as fewer particles.
+    const auto dir = copyCase("damBreak2D");
+    sph::generateParticles(dir, true);
+    const auto file = dir / "0/fluid.vtu";
+    std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+    expectContains(failureOf(dir, false), "error: particle file '" + file.string() + "' is not a readable VTK unstructured grid");
+}
+
+TEST(BadInput, CorruptFreeBodyRestartState) {
+    const auto dir = copyCase("sinkingCylinder2D");
+    replaceInFile(dir / "system/generateParticlesDict", "spacing     0.01;", "spacing     0.02;");
+    replaceInFile(dir / "system/controlDict", "endTime         0.3;", "endTime         0.02;");
+    sph::generateParticles(dir, true);
+    sph::runCase(dir);
+    replaceInFile(dir / "system/controlDict", "endTime         0.02;", "endTime         0.04;");
+    sph::StateHeader header;
+    const auto fluid = sph::readParticleFile<2>(dir / "0.02/fluid.vtu", "fluid", header);
+    ASSERT_EQ(header.restart.count("motion:cylinder"), 1u);
+    header.restart["motion:cylinder"].resize(3);
+    sph::writeParticleFile(dir / "0.02/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "error: '" + (dir / "0.02/fluid.vtu").string() +
+                                              "': the saved free-body state has 3 values, expected 15 finite values (a corrupt state file?)");
+}
+
+TEST(BadInput, StartTimeThatWasNotWritten) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/controlDict", "startFrom       latestTime;", "startFrom       startTime;\nstartTime       0.5;");
+    sph::generateParticles(dir, true);
+    expectContains(failureOf(dir, false), "no time directory 0.5 with a fluid.vtu; written times are: 0");
+}
+
+TEST(BadInput, EndTimeNotAfterTheStartTime) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/controlDict", "endTime         0.2;", "endTime         0;");
+    expectContains(failureOf(dir), "error: keyword 'endTime' in dictionary 'controlDict': must be later than the start time 0, found 0");
 }
 
 TEST(BadInput, MissingStateTellsToGenerateParticles) {

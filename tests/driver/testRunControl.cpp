@@ -98,22 +98,40 @@ TEST(RunControl, DiskFullStopsWithAClearErrorAndKeepsWhatWasWritten) {
     EXPECT_TRUE(std::filesystem::exists(dir / "0.02/walls.vtu"));
 }
 
-TEST(RunControl, UnwritableCaseDirectoryStopsBeforeTheFirstStep) {
-    // Run as the unprivileged user 'nobody' (root writes anywhere) on a read-only case directory.
-    const auto dir = damBreak("0.02");
+namespace {
+
+// Runs wcsph as the unprivileged user 'nobody' (root reads and writes anywhere) and returns
+// its log after checking it failed with exit status 1.
+std::string failureAsNobody(const std::filesystem::path& dir) {
     const pid_t solver = startSolver(dir, [] {
         if (geteuid() == 0) {
             setgid(65534);
             setuid(65534);
         }
     });
-    std::filesystem::permissions(dir, std::filesystem::perms::owner_write | std::filesystem::perms::group_write | std::filesystem::perms::others_write,
-                                 std::filesystem::perm_options::remove);
     const int status = waitForExit(solver);
-    std::filesystem::permissions(dir, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
     const std::string log = readText(dir / "log");
-    ASSERT_TRUE(WIFEXITED(status)) << log;
+    EXPECT_TRUE(WIFEXITED(status)) << log;
     EXPECT_EQ(WEXITSTATUS(status), 1) << log;
-    EXPECT_NE(log.find("directory not writable"), std::string::npos) << log;
     EXPECT_EQ(log.find("Starting time loop"), std::string::npos) << log;
+    return log;
+}
+
+}  // namespace
+
+TEST(RunControl, UnwritableCaseDirectoryStopsBeforeTheFirstStep) {
+    const auto dir = damBreak("0.02");
+    namespace fs = std::filesystem;
+    fs::permissions(dir, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove);
+    const std::string log = failureAsNobody(dir);
+    fs::permissions(dir, fs::perms::owner_write, fs::perm_options::add);
+    EXPECT_NE(log.find("directory not writable"), std::string::npos) << log;
+}
+
+TEST(RunControl, UnreadableDictionaryIsAClearError) {
+    const auto dir = damBreak("0.02");
+    std::filesystem::permissions(dir / "system/sphSchemes", std::filesystem::perms::none);
+    const std::string log = failureAsNobody(dir);
+    EXPECT_NE(log.find("error: cannot open dictionary '" + (dir / "system/sphSchemes").string() + "': permission denied or unreadable"), std::string::npos)
+        << log;
 }

@@ -99,6 +99,18 @@ TEST(Dictionary, MissingFileIsAnError) {
     EXPECT_EQ(message, "error: cannot open dictionary '/nonexistent/controlDict': file not found");
 }
 
+TEST(Dictionary, IntegerOutOfRangeIsAnError) {
+    // Found by the fuzzer: 1e308 read as an integer was converted before its range was checked.
+    const Dictionary d = parse("big 1e308; small -3e9; limit 2147483647;");
+    EXPECT_EQ(errorOf([&] { d.get<int>("big"); }), "testDict:1:5: error: keyword 'big' in dictionary 'testDict': expected an integer, found number 1e308");
+    EXPECT_EQ(errorOf([&] { d.get<int>("small"); }), "testDict:1:18: error: keyword 'small' in dictionary 'testDict': expected an integer, found number -3e9");
+    EXPECT_EQ(d.get<int>("limit"), 2147483647);
+}
+
+TEST(Dictionary, DeviceIsNotADictionary) {
+    EXPECT_EQ(errorOf([] { Dictionary::fromFile("/dev/zero"); }), "error: cannot open dictionary '/dev/zero': not a regular file");
+}
+
 TEST(Dictionary, TypeErrorsSayWhatWasExpectedAndFound) {
     const Dictionary d = parse("inner { endTime abc; n 1.5; flag maybe; v (1 x); d { } w 3; many 1 2; neg -1; }");
     const Dictionary& in = d.subDict("inner");
