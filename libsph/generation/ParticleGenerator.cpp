@@ -146,9 +146,11 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     header.periodic = periodic;
     dict.checkUnused();
     std::filesystem::create_directories(outputDirectory);
+    // Walls first: the solver takes a time directory with a fluid.vtu for a complete state.
+    StateHeader wallHeader = header;
+    wallHeader.patchNames = patchNames;
+    writeParticleFile(outputDirectory / "walls.vtu", walls, wallHeader);
     writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
-    header.patchNames = patchNames;
-    writeParticleFile(outputDirectory / "walls.vtu", walls, header);
     return {D, fluidSet.size(), walls.size(), dropped};
 }
 
