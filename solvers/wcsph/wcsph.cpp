@@ -26,7 +26,9 @@ Options:
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
-system/generateParticlesDict. See doc/userGuide.md.
+system/generateParticlesDict. Ctrl-C or SIGTERM finishes the current step, writes the state
+and exits; running again continues from the latest written time (startFrom latestTime).
+See doc/userGuide.md and doc/reliability.md.
 )";
 
 }  // namespace

@@ -15,7 +15,6 @@ import os
 import re
 import shutil
 import subprocess
-import time
 
 import numpy as np
 
@@ -53,7 +52,14 @@ def main():
     parser.add_argument("--steps", type=int, default=100000)
     parser.add_argument("--spacing", type=float, default=0.02)
     parser.add_argument("--threads", type=int, default=os.cpu_count())
+    parser.add_argument("--analyse", action="store_true", help="only analyse the last run in build/soakTest/")
     args = parser.parse_args()
+    if not args.analyse:
+        soak(args)
+    analyse(args)
+
+
+def soak(args):
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
     case = os.path.join(WORK, "case")
     shutil.rmtree(WORK, ignore_errors=True)
@@ -82,10 +88,18 @@ def main():
     set_entry(controlDict, "writeCsv", "yes")
     set_entry(controlDict, "executeInterval", "%.17g" % ((endTime - start) / 100))
     print("soak: %d steps of dt = %.4g s from t = %g to %.4g, %d threads" % (args.steps, dt, start, endTime, args.threads), flush=True)
-    began = time.time()
-    log = run(case, os.path.join(WORK, "log.soak"), env)
-    wall = time.time() - began
-    took = int(re.search(r"End at t = [0-9.e+-]+: (\d+) steps", log).group(1))
+    run(case, os.path.join(WORK, "log.soak"), env)
+
+
+def analyse(args):
+    case = os.path.join(WORK, "case")
+    start = 1.2
+    with open(os.path.join(WORK, "log.soak")) as f:
+        log = f.read()
+    took = int(re.search(r"End at t = ([0-9.e+-]+): (\d+) steps", log).group(2))
+    endTime = float(re.search(r"End at t = ([0-9.e+-]+):", log).group(1))
+    wall = float(re.search(r"Wall time ([0-9.]+) s", log).group(1))
+    dt = (endTime - start) / took
 
     series = []
     times = sorted((float(name), name) for name in os.listdir(case)
@@ -109,7 +123,9 @@ def main():
     s = np.array(series)
     scale = s[0, 1] * GRAVITY * DEPTH  # M g H
     half = len(s) // 2
-    l2 = np.array([errors.get(t, np.nan) for t in s[:, 0]])
+    # The error series is written to 9 digits: match each state to the nearest sample.
+    samples = np.array(sorted(errors.items()))
+    l2 = np.array([samples[np.abs(samples[:, 0] - t).argmin(), 1] for t in s[:, 0]])
     rows = [
         ("steps taken", "%d (dt = %.4g s, %.4g s simulated)" % (took, dt, endTime - start)),
         ("wall time", "%.0f s, %.3g particle-steps/s" % (wall, took * len(m) / wall)),

@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
+--scaling, at 4x fewer and 4x more particles) and prints particles, steps, wall time,
+particle-steps per second and peak memory (also per particle: with --scaling, the difference
+between the largest and the smallest run over their particle counts), as a Markdown table. The time loop is
+timed by the solver itself, without start-up; the case writes only at its end time, and that
+write (the solver's "output" part) is left out of the rate.
+
+Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
+Cases: utilities/benchmark/<case>/ (damBreak2D: DualSPHysics' standard 2D dam break, 20,000
+fluid particles, 0.25 s).
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
+WORK = os.path.join(ROOT, "build", "benchmark")
+
+
+def prepare(case, spacing_factor):
+    directory = os.path.join(WORK, "%s-x%g" % (case, spacing_factor))
+    shutil.rmtree(directory, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "utilities", "benchmark", case), directory)
+    generate = os.path.join(directory, "system/generateParticlesDict")
+    with open(generate) as f:
+        text = f.read()
+    spacing = float(re.search(r"(?m)^spacing\s+([0-9.e+-]+);", text).group(1)) * spacing_factor
+    with open(generate, "w") as f:
+        f.write(re.sub(r"(?m)^spacing\s+[0-9.e+-]+;", "spacing     %.10g;" % spacing, text))
+    subprocess.run([os.path.join(BIN, "generateParticles"), "-case", directory], check=True, stdout=subprocess.DEVNULL)
+    return directory
+
+
+def run(directory, threads):
+    for name in os.listdir(directory):
+        if re.fullmatch(r"[0-9.e+-]+", name) and name != "0":
+            shutil.rmtree(os.path.join(directory, name))
+    log_path = os.path.join(directory, "log.wcsph.%d" % threads)
+    with open(log_path, "w") as log:
+        process = subprocess.Popen([os.path.join(BIN, "wcsph"), "-case", directory], stdout=log, stderr=subprocess.STDOUT,
+                                   env=dict(os.environ, OMP_NUM_THREADS=str(threads)))
+        _, status, usage = os.wait4(process.pid, 0)
+    with open(log_path) as f:
+        log = f.read()
+    if status != 0:
+        raise SystemExit("benchmark: wcsph failed on %s, see %s" % (directory, log_path))
+    steps, fluid, walls = map(int, re.search(r"End at t = [0-9.e+-]+: (\d+) steps, (\d+) fluid \+ (\d+) wall particles", log).groups())
+    wall = float(re.search(r"Wall time ([0-9.]+) s", log).group(1))
+    output = float(re.search(r"^\s+output\s+([0-9.]+) s", log, re.M).group(1))
+    timed = wall - output
+    peak = usage.ru_maxrss * 1024  # bytes (Linux reports kB)
+    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "rate": steps * fluid / timed,
+            "rateAll": steps * (fluid + walls) / timed, "peak": peak}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", default="damBreak2D")
+    parser.add_argument("--threads", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--scaling", action="store_true", help="also at 4x fewer and 4x more particles (2D: spacing x2, x0.5)")
+    args = parser.parse_args()
+    factors = [2.0, 1.0, 0.5] if args.scaling else [1.0]
+    print("| case | fluid + wall particles | threads | steps | time loop [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    peaks = []
+    for factor in factors:
+        directory = prepare(args.case, factor)
+        for threads in args.threads:
+            r = run(directory, threads)
+            peaks.append((r["fluid"] + r["walls"], r["peak"]))
+            print("| %s dx x%g | %d + %d | %d | %d | %.1f | %.3g | %.3g | %.0f MB | %.0f |" % (
+                args.case, factor, r["fluid"], r["walls"], threads, r["steps"], r["wall"], r["rate"], r["rateAll"], r["peak"] / 1e6,
+                r["peak"] / (r["fluid"] + r["walls"])), flush=True)
+    if args.scaling:
+        # The peak includes the libraries and buffers any run has: the difference isolates what a particle costs.
+        (small, peakSmall), (large, peakLarge) = min(peaks), max(peaks)
+        print("\nmemory per particle (largest minus smallest run): %.0f bytes" % ((peakLarge - peakSmall) / (large - small)))
+
+
+if __name__ == "__main__":
+    main()
