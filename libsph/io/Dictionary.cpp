@@ -432,7 +432,8 @@ std::vector<Token> listItems(const Entry& e, const std::string& dictName, const 
         if (item.kind == Token::Kind::Punctuation)
             throw FatalError(item.where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
                                              ", found nested '" + item.text + "'");
-    if (first == 1 && static_cast<std::size_t>(t[0].number) != items.size())
+    // Compared as numbers: a prefix such as 1e308 or -1 has no size_t value.
+    if (first == 1 && t[0].number != static_cast<double>(items.size()))
         throw FatalError(t[0].where, "keyword '" + e.keyword() + "': list size " + t[0].text + " does not match its " +
                                          std::to_string(items.size()) + " items");
     return items;

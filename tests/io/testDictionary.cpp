@@ -107,6 +107,14 @@ TEST(Dictionary, IntegerOutOfRangeIsAnError) {
     EXPECT_EQ(d.get<int>("limit"), 2147483647);
 }
 
+TEST(Dictionary, ListSizePrefixOutOfRangeIsAnError) {
+    // Found by the fuzzer: a size prefix of 1e308 was converted to size_t before the comparison.
+    const Dictionary d = parse("big 1e308(0 1); negative -1(0 1); good 2(0 1);");
+    EXPECT_EQ(errorOf([&] { d.get<std::vector<double>>("big"); }), "testDict:1:5: error: keyword 'big': list size 1e308 does not match its 2 items");
+    EXPECT_EQ(errorOf([&] { d.get<std::vector<double>>("negative"); }), "testDict:1:26: error: keyword 'negative': list size -1 does not match its 2 items");
+    EXPECT_EQ(d.get<std::vector<double>>("good"), (std::vector<double>{0.0, 1.0}));
+}
+
 TEST(Dictionary, DeviceIsNotADictionary) {
     EXPECT_EQ(errorOf([] { Dictionary::fromFile("/dev/zero"); }), "error: cannot open dictionary '/dev/zero': not a regular file");
 }
