@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace sph {
@@ -66,6 +67,46 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
         }
         if (d == D) break;
     }
+    return walls;
+}
+
+// A solid box with the fluid outside: the lattice inside it, `layers` deep from each face, the
+// normal pointing out of the nearest face (the mean of the faces at an edge or corner).
+template <int D>
+WallPatchParticles<D> boxObstacle(const Dictionary& patch, double dx, int layers, double offset) {
+    const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
+    std::array<int, D> counts;
+    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(patch, "max", lo[d], hi[d], dx);
+    WallPatchParticles<D> walls;
+    std::array<int, D> index{};
+    while (true) {
+        int depth = std::numeric_limits<int>::max();
+        for (int d = 0; d < D; ++d) {
+            const auto dd = static_cast<std::size_t>(d);
+            depth = std::min({depth, index[dd], counts[dd] - 1 - index[dd]});
+        }
+        if (depth < layers) {
+            Vec<D> x, normal = Vec<D>::Zero();
+            for (int d = 0; d < D; ++d) {
+                const auto dd = static_cast<std::size_t>(d);
+                x[d] = lo[d] + (index[dd] + 0.5) * dx;
+                if (index[dd] == depth) normal[d] -= 1.0;
+                if (counts[dd] - 1 - index[dd] == depth) normal[d] += 1.0;
+            }
+            if (normal.squaredNorm() == 0.0) normal[0] = 1.0;  // a box one particle thick: any face
+            normal.normalize();
+            // The lattice puts the first layer dx/2 inside the box; shift along the normal for other offsets.
+            walls.add(x - (offset - 0.5) * dx * normal, normal, dx, depth);
+        }
+        int d = 0;
+        for (; d < D; ++d) {
+            const auto dd = static_cast<std::size_t>(d);
+            if (++index[dd] < counts[dd]) break;
+            index[dd] = 0;
+        }
+        if (d == D) break;
+    }
+    walls.solid = [lo, hi](const Vec<D>& x) { return (x.array() > lo.array()).all() && (x.array() < hi.array()).all(); };
     return walls;
 }
 
@@ -178,12 +219,13 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
     if (layers < 1) patch.fail("layers", fmt::format("must be at least 1, found {}", layers));
     const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
     if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
+    if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);
     if constexpr (D == 2) {
         if (type == "polyline") return polyline(patch, dx, layers, offset);
         if (type == "polygon") return polygon(patch, dx, layers, offset);
         if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
     }
-    const std::string valid = D == 2 ? "boxWalls, circle, ellipse, polygon, polyline" : "boxWalls";
+    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline" : "box, boxWalls";
     throw FatalError(patch.entry("type").tokens().front().where,
                      fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }

@@ -5,6 +5,7 @@
 //   boundaries
 //   {
 //       tank     { type boxWalls; min (0 0); max (1.6 0.8); layers 3; open (yMax); }  // 1D-3D
+//       block    { type box; min (0.9 0); max (1.02 0.12); layers 3; }                 // 1D-3D, an obstacle
 //       ramp     { type polyline; points ((0 0) (1 0.5)); layers 3; side left; }     // 2D
 //       tank     { type polygon; points ((0 0) (4 0) (4 2) (0 2)); layers 1; firstLayerOffset 0; } // 2D, closed
 //       cylinder { type circle; centre (0.5 0.5); radius 0.1; layers 3; fluidInside no; }  // 2D
@@ -13,7 +14,9 @@
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
 // included; the normal points to the nearest point of the box (diagonal in corners); a
 // firstLayerOffset other than 1/2 shifts every particle along its normal.
-// A circle or ellipse with fluidInside no is an obstacle: fluid regions leave out its inside.
+// box is a solid obstacle: its lattice `layers` deep inside each face, normals out of the
+// nearest face (diagonal at edges and corners); fluid regions leave out its inside, as they
+// do the inside of a circle or ellipse with fluidInside no.
 // polyline's and polygon's normal is on the `side` (left or right) of the direction of travel;
 // a polygon (closed) has a particle on each vertex, its normal along the bisector, so a
 // counter-clockwise polygon with side left is a tank whose particle 0 sits on the first point.

@@ -25,11 +25,12 @@ struct CubicSplineMonaghanLattanzio1985 {
     }
 
     // (dW/dr)/r, so that grad W = gradientFactor(r) * r_vec; finite at r = 0.
+    // Both pieces evaluated and one selected: no branch, so a loop over pairs vectorises.
     double gradientFactor(double r) const {
         const double q = r * invH;
-        if (q < 1.0) return sigma * invH * invH * (-3.0 + 2.25 * q);
-        if (q < 2.0) return -0.75 * sigma * invH * invH * (2.0 - q) * (2.0 - q) / q;
-        return 0.0;
+        const double outer = std::max(2.0 - q, 0.0);
+        const double piece = q < 1.0 ? -3.0 + 2.25 * q : -0.75 * outer * outer / std::max(q, 1.0);
+        return sigma * invH * invH * piece;
     }
 
     static double normalisation(double h) {

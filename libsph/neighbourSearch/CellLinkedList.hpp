@@ -1,6 +1,7 @@
-// Cell-linked list: a uniform grid of cells no smaller than the kernel support, filled by a
-// counting sort (O(N)). A query visits the 3^D cells around a point; in each row the three
-// neighbouring cells are consecutive, so a row is one contiguous index range. Periodic
+// Cell-linked list: a uniform grid of cells half the search radius wide, filled by a counting
+// sort (O(N)). A query visits the 5^D cells around a point, which hug the search sphere more
+// closely than 3^D cells a radius wide (1.4x fewer candidates in 2D, 1.7x in 3D); in each row
+// the five cells are consecutive, so a row is one contiguous range of the cell order. Periodic
 // directions wrap the cells and report the nearest image's separation.
 #pragma once
 
@@ -17,10 +18,13 @@ namespace sph {
 template <int D>
 class CellLinkedList {
 public:
-    // A periodic direction needs an extent of at least three cells.
-    CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double cellSize, const std::array<bool, D>& periodic = {});
+    static constexpr int reach = 2;  // cells per search radius
+    static constexpr int stencilCells = D == 1 ? 5 : D == 2 ? 25 : 125;
 
-    // Sorts the points into cells; the list refers to `points` until the next build.
+    // For queries within `radius`. A periodic direction needs an extent of at least 2.5 radii.
+    CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double radius, const std::array<bool, D>& periodic = {});
+
+    // Sorts copies of the points into cells: queries see the positions of the last build.
     void build(const std::vector<Vec<D>>& points) { build(points, 0, points.size()); }
     // Only points [begin, end) (one wall patch, say); queries report their indices in `points`.
     void build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end);
@@ -28,50 +32,48 @@ public:
     // Order of the points sorted by cell (for reordering particle storage).
     std::vector<std::uint32_t> cellOrder(const std::vector<Vec<D>>& points) const;
 
+    // The cell-order ranges of the 5^D cells around x: one range per row of five consecutive
+    // cells, or one per cell across a periodic x boundary. A plain array, so that a hot loop
+    // over it keeps its sums in registers.
+    struct Range {
+        std::uint32_t begin, end;
+    };
+    struct StencilRanges {
+        std::array<Range, stencilCells> ranges;
+        int count = 0;
+        const Range* begin() const { return ranges.data(); }
+        const Range* end() const { return ranges.data() + count; }
+    };
+    StencilRanges stencilRanges(const Vec<D>& x) const;
+
     // Calls visit(j, x - x_j, |x - x_j|^2) for every point j with |x - x_j| < radius.
     template <class Visit>
     void forEachNeighbour(const Vec<D>& x, double radius, Visit&& visit) const {
-        const std::array<int, D> c = cellCoordinates(x);
         const double radius2 = radius * radius;
-        std::array<int, D> offset{};
-        for (int d = 1; d < D; ++d) offset[static_cast<std::size_t>(d)] = -1;
-        const auto visitRange = [&](long first, long last) {
-            for (std::uint32_t k = cellStart_[static_cast<std::size_t>(first)]; k < cellStart_[static_cast<std::size_t>(last) + 1]; ++k) {
-                const std::uint32_t j = sorted_[k];
-                Vec<D> r = x - (*points_)[j];
+        for (const Range& range : stencilRanges(x)) {
+            for (std::uint32_t k = range.begin; k < range.end; ++k) {
+                Vec<D> r = x - sortedPosition_[k];
                 if (anyPeriodic_) nearestImage(r);
                 const double r2 = r.squaredNorm();
-                if (r2 < radius2) visit(j, r, r2);
+                if (r2 < radius2) visit(sorted_[k], r, r2);
             }
-        };
-        while (true) {
-            bool inside = true;
-            long rowCell = 0;
-            for (int d = D - 1; d >= 1; --d) {
-                const auto dd = static_cast<std::size_t>(d);
-                int cd = c[dd] + offset[dd];
-                if (periodic_[dd]) cd = (cd + dims_[dd]) % dims_[dd];
-                if (cd < 0 || cd >= dims_[dd]) inside = false;
-                rowCell = rowCell * dims_[dd] + cd;
-            }
-            if (inside) {
-                if (periodic_[0]) {
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const long cell = rowCell * dims_[0] + (c[0] + dx + dims_[0]) % dims_[0];
-                        visitRange(cell, cell);
-                    }
-                } else {
-                    visitRange(rowCell * dims_[0] + std::max(c[0] - 1, 0), rowCell * dims_[0] + std::min(c[0] + 1, dims_[0] - 1));
-                }
-            }
-            int d = 1;
-            for (; d < D; ++d) {
-                if (++offset[static_cast<std::size_t>(d)] <= 1) break;
-                offset[static_cast<std::size_t>(d)] = -1;
-            }
-            if (d >= D) break;
         }
     }
+
+    // Positions in cell order (of the last build); each pair once: the neighbours of place k
+    // at later places l are those of stencilRanges(sortedPosition(k)) with l > k.
+    const Vec<D>& sortedPosition(std::size_t k) const { return sortedPosition_[k]; }
+    // Per direction, the period and its inverse, both 0 where not periodic: r - L nearbyint(r / L)
+    // is then the nearest image's separation with no branch.
+    std::array<double, D> periods() const {
+        std::array<double, D> lengths{};
+        for (int d = 0; d < D; ++d) lengths[static_cast<std::size_t>(d)] = periodic_[static_cast<std::size_t>(d)] ? extent_[d] : 0.0;
+        return lengths;
+    }
+
+    // The points in cell order: place k holds point sortedIndex(k).
+    std::size_t pointCount() const { return sorted_.size(); }
+    std::uint32_t sortedIndex(std::size_t k) const { return sorted_[k]; }
 
     // Shortest separation vector under the periodic directions.
     void nearestImage(Vec<D>& r) const {
@@ -79,7 +81,6 @@ public:
             if (periodic_[static_cast<std::size_t>(d)]) r[d] -= extent_[d] * std::round(r[d] / extent_[d]);
     }
 
-    double cellSize() const { return cellSize_; }
     std::size_t cellCount() const { return cellStart_.size() - 1; }
 
 private:
@@ -102,14 +103,13 @@ private:
 
     Vec<D> lower_;
     Vec<D> extent_;
-    double cellSize_;
     Vec<D> inverseCellSizes_;  // per direction: a periodic direction stretches its cells to fit
     std::array<int, D> dims_;
     std::array<bool, D> periodic_;
     bool anyPeriodic_ = false;
     std::vector<std::uint32_t> cellStart_;  // size cells + 1
-    std::vector<std::uint32_t> sorted_;
-    const std::vector<Vec<D>>* points_ = nullptr;
+    std::vector<std::uint32_t> sorted_;     // cell order -> point index
+    std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries
 };
 
 }  // namespace sph

@@ -24,6 +24,7 @@
 #include "densityDiffusion/DensityDiffusion.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
+#include "physics/CellOrderedFluid.hpp"
 #include "motion/PatchMotion.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "viscosity/Viscosity.hpp"
@@ -130,6 +131,7 @@ private:
     std::size_t wallParticleEnd_ = 0;  // walls [0, wallParticleEnd_) enter the kernel sums
     CellLinkedList<D> fluidCells_;
     CellLinkedList<D> wallCells_;
+    CellOrderedFluid<D> cellOrdered_;
 };
 
 }  // namespace sph

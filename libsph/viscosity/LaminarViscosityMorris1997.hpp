@@ -12,14 +12,16 @@ namespace sph {
 struct LaminarViscosityMorris1997 {
     static constexpr bool enabled = true;
 
-    LaminarViscosityMorris1997(double nu, double h) : nu(nu), eta2(0.01 * h * h) {}
+    explicit LaminarViscosityMorris1997(double nu) : nu(nu) {}
 
-    template <int D>
-    Vec<D> acceleration(const Vec<D>& /*rij*/, const Vec<D>& vij, double r2, double rhoi, double rhoj, double mj, double F) const {
-        return (mj * nu * (rhoi + rhoj) / (rhoi * rhoj) * F * r2 / (r2 + eta2)) * vij;
+    // The acceleration of i from j is m_j pairFactor v_ij (j receives -m_i pairFactor v_ij), from
+    // r^2, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r.
+    static constexpr bool alongSeparation = false;
+    double pairFactor(double /*vDotR*/, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F) const {
+        return nu * (rhoi + rhoj) / (rhoi * rhoj) * F * r2 * inverseRegularisedR2;
     }
 
-    double nu, eta2;
+    double nu;
 };
 
 }  // namespace sph

@@ -18,7 +18,7 @@ ViscosityRegistry makeViscosityRegistry() {
                  {"Morris laminar viscosity, nu from constant/fluidProperties", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", {}},
                  [](const Dictionary& dict, const ModelContext& c) {
                      if (!(c.nu > 0.0)) dict.fail("type", "laminar viscosity needs a kinematic viscosity nu > 0 in constant/fluidProperties");
-                     return Viscosity{LaminarViscosityMorris1997(c.nu, c.h)};
+                     return Viscosity{LaminarViscosityMorris1997(c.nu)};
                  });
     return registry;
 }

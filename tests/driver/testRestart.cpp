@@ -216,8 +216,11 @@ TEST(Restart, KillAtRandomMomentsLosesNothingWritten) {
         ++kills;
         checkCollection(dir);
     }
-    const int status = waitForExit(startSolver(dir));
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readText(dir / "log");
+    // A kill may land after the end time was written, while the solver exits: nothing left to run.
+    if (!std::filesystem::exists(dir / "0.1")) {
+        const int status = waitForExit(startSolver(dir));
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readText(dir / "log");
+    }
     EXPECT_GE(kills, 3);
     const std::vector<double> written = checkCollection(dir);
     EXPECT_EQ(written.size(), 11u);  // 0, 0.01, ..., 0.1: each once

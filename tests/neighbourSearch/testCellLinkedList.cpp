@@ -58,7 +58,8 @@ TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
     std::vector<std::uint32_t> sorted = order;
     std::sort(sorted.begin(), sorted.end());
     for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
-    const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<int>(p.y() * 10) * 10 + static_cast<int>(p.x() * 10); };
+    // Cells half the search radius wide: 20 x 20.
+    const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<int>(p.y() * 20) * 20 + static_cast<int>(p.x() * 20); };
     for (std::size_t k = 1; k < order.size(); ++k) EXPECT_LE(cellOf(points[order[k - 1]]), cellOf(points[order[k]]));
 }
 
@@ -88,6 +89,6 @@ TEST(CellLinkedList, PeriodicDirectionsFindNearestImages) {
     EXPECT_GT(acrossTheSeam, 0u);
 }
 
-TEST(CellLinkedList, PeriodicDirectionShorterThanThreeCellsIsRejected) {
-    EXPECT_THROW(sph::CellLinkedList<2>(sph::Vec<2>(0, 0), sph::Vec<2>(0.25, 1), 0.1, {true, false}), std::invalid_argument);
+TEST(CellLinkedList, PeriodicDirectionShorterThanTwoAndAHalfRadiiIsRejected) {
+    EXPECT_THROW(sph::CellLinkedList<2>(sph::Vec<2>(0, 0), sph::Vec<2>(0.2, 1), 0.1, {true, false}), std::invalid_argument);
 }

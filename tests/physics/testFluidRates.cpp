@@ -107,7 +107,7 @@ TEST(FluidRates, InviscidCaseAllocatesNoViscousField) {
     auto inviscid = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; });
     EXPECT_FALSE(inviscid.system.walls.hasVector("viscousVelocity"));
     auto viscous = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
-                               LaminarViscosityMorris1997(1e-3, 1.3 * dx));
+                               LaminarViscosityMorris1997(1e-3));
     EXPECT_TRUE(viscous.system.walls.hasVector("viscousVelocity"));
 }
 
@@ -116,7 +116,7 @@ TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
     // r^2/(r^2 + 0.01 h^2); the regularisation costs about 1.5 % at h = 2 dx.
     const double nu = 1e-2;
     auto lattice = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
-                               LaminarViscosityMorris1997(nu, 2.0 * dx), 2.0);
+                               LaminarViscosityMorris1997(nu), 2.0);
     auto& v = lattice.system.fluid.vector("velocity");
     for (std::size_t k = 0; k < v.size(); ++k) v[k] = {std::pow(lattice.system.fluid.position[k].y(), 2), 0.0};
     lattice.system.evaluateRates(0.0);

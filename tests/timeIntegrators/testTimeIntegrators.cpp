@@ -140,7 +140,7 @@ std::vector<Vec<2>> dropPositions(const std::string& entries, int steps) {
                                        [](const Vec<2>& x) -> Vec<2> { return Vec<2>(-x.x() + 0.5 * x.y(), x.y() - 0.5 * x.x()) * 20.0; });
     ParticleSet<2> walls("walls");
     walls.addScalar("mass", 0.0);
-    FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 20.0, 7.0, 0.0), LaminarViscosityMorris1997(1e-3, 1.3 * dx),
+    FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 20.0, 7.0, 0.0), LaminarViscosityMorris1997(1e-3),
                           NoDensityDiffusion{}, DensityFormulation::Continuity};
     FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(-1, -1), Vec<2>(1, 1), Vec<2>::Zero(), 0.0);
     auto integrator = makeIntegrator(entries);
@@ -207,7 +207,7 @@ double shearWaveAmplitude(const std::string& entries, double dt, int steps, doub
     ParticleSet<2> walls("walls");
     walls.addScalar("mass", 0.0);
     const double h = 1.3 * dx;
-    FluidModels<2> models{WendlandC2<2>(h), TaitEquationOfState(1000.0, 1.0, 7.0, 0.0), LaminarViscosityMorris1997(nu, h), NoDensityDiffusion{},
+    FluidModels<2> models{WendlandC2<2>(h), TaitEquationOfState(1000.0, 1.0, 7.0, 0.0), LaminarViscosityMorris1997(nu), NoDensityDiffusion{},
                           DensityFormulation::Continuity};
     FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(0, 0), Vec<2>(1, 1), Vec<2>::Zero(), 0.0, {true, true});
     auto integrator = makeIntegrator(entries);
