@@ -105,6 +105,9 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     if (hdx < 1.0) kernelDict.fail("hdx", fmt::format("h = hdx dx must not be smaller than the particle spacing; found hdx {:g} (valid: >= 1)", hdx));
     const double h = hdx * dx;
     Kernel<D> kernel = selectByType(makeKernelRegistry<D>(), kernelDict, h);
+    if (!std::visit([](const auto& k) { return compiledKernel<std::decay_t<decltype(k)>>; }, kernel))
+        kernelDict.fail("type", fmt::format("kernel '{}' is not compiled into this build (CMake option SPHKIT_KERNELS); compiled kernels: {}",
+                                            kernelDict.get<std::string>("type"), compiledKernelNames));
     fmt::print("Selecting kernel {}: hdx {:g}, dx {:g}, h {:g}, support radius {:g}\n", kernelDict.get<std::string>("type"), hdx, dx, h,
                std::visit([](const auto& k) { return k.supportRadius(); }, kernel));
 

@@ -16,6 +16,27 @@ template <int D>
 using Kernel = std::variant<CubicSplineMonaghanLattanzio1985<D>, QuinticSplineMorris1997<D>, WendlandC2<D>, WendlandC4<D>>;
 
 // Factory argument: the smoothing length h.
+// Whether this build compiled the hot loops for a kernel (CMake option SPHKIT_KERNELS).
+template <class K>
+inline constexpr bool compiledKernel = false;
+#ifdef SPHKIT_KERNEL_cubicSpline
+template <int D>
+inline constexpr bool compiledKernel<CubicSplineMonaghanLattanzio1985<D>> = true;
+#endif
+#ifdef SPHKIT_KERNEL_quinticSpline
+template <int D>
+inline constexpr bool compiledKernel<QuinticSplineMorris1997<D>> = true;
+#endif
+#ifdef SPHKIT_KERNEL_wendlandC2
+template <int D>
+inline constexpr bool compiledKernel<WendlandC2<D>> = true;
+#endif
+#ifdef SPHKIT_KERNEL_wendlandC4
+template <int D>
+inline constexpr bool compiledKernel<WendlandC4<D>> = true;
+#endif
+inline constexpr const char* compiledKernelNames = SPHKIT_COMPILED_KERNELS;
+
 template <int D>
 using KernelRegistry = Registry<Kernel<D>, double>;
 

@@ -110,6 +110,8 @@ public:
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }
+    // What the pair loop copied and allocated in the last evaluation (for memory accounting).
+    const CellOrderedFluid<D>& cellOrderedFluid() const { return cellOrdered_; }
 
 private:
     void computeSummationDensity();

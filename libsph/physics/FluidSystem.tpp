@@ -433,7 +433,9 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->setGravity(gravity, supportRadius_);
     const auto dispatch = [&]<bool ViscousOnly>(const auto& kernel, const auto& viscosity, const auto& diffusion) {
         using Diffusion = std::decay_t<decltype(diffusion)>;
-        if (continuity()) {
+        if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>>) {
+            throw std::logic_error("the pair loop of this kernel is not compiled (SPHKIT_KERNELS); the case reader rejects it");
+        } else if (continuity()) {
             fluidRates<D, true, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);
         } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
             fluidRates<D, false, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);

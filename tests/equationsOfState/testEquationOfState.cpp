@@ -20,6 +20,17 @@ TEST(TaitEquationOfState, HandComputedPressure) {
     EXPECT_DOUBLE_EQ(eos.pressure(1000.0), 50.0);
 }
 
+TEST(TaitEquationOfState, WholeGammaBySquaringEqualsPow) {
+    // gamma 7 takes the repeated-squaring path, 7.5 std::pow; both against std::pow here.
+    for (double gamma : {7.0, 1.0, 7.5}) {
+        const TaitEquationOfState eos(1000.0, 30.0, gamma, 0.0);
+        for (double rho : {900.0, 999.9, 1000.1, 1013.0, 1200.0})
+            EXPECT_NEAR(eos.pressure(rho), eos.B * (std::pow(rho / 1000.0, gamma) - 1.0), 1e-14 * eos.B) << gamma << " " << rho;
+    }
+    EXPECT_EQ(TaitEquationOfState(1000.0, 30.0, 7.0, 0.0).wholeGamma, 7);
+    EXPECT_EQ(TaitEquationOfState(1000.0, 30.0, 7.5, 0.0).wholeGamma, 0);
+}
+
 TEST(TaitEquationOfState, DensityInvertsPressure) {
     const TaitEquationOfState eos(998.0, 35.0, 7.0, 1e3);
     for (double rho : {950.0, 998.0, 1003.0, 1100.0}) EXPECT_NEAR(eos.density(eos.pressure(rho)), rho, 1e-9 * rho);

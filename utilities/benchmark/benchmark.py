@@ -1,5 +1,19 @@
 #!/usr/bin/python3
 """Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
+--scaling, at other particle counts) and prints particles, steps, wall time, particle-steps per
+second and peak memory (also per particle: the difference between the largest and the smallest
+run over their particle counts), as a Markdown table. The time loop is timed by the solver
+itself, without start-up; the case writes only at its end time, and that write (the solver's
+"output" part) is left out of the rate.
+
+Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
+                                         [--factors 2 1 0.5] [--end-time T]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
+Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
+fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
+wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
+box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
+"""Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
 --scaling, at 4x fewer and 4x more particles) and prints particles, steps, wall time,
 particle-steps per second and peak memory (also per particle: with --scaling, the difference
 between the largest and the smallest run over their particle counts), as a Markdown table. The time loop is
@@ -10,6 +24,20 @@ Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--s
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
 Cases: utilities/benchmark/<case>/ (damBreak2D: DualSPHysics' standard 2D dam break, 20,000
 fluid particles, 0.25 s).
+"""Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
+--scaling, at other particle counts) and prints particles, steps, wall time, particle-steps per
+second and peak memory (also per particle: the difference between the largest and the smallest
+run over their particle counts), as a Markdown table. The time loop is timed by the solver
+itself, without start-up; the case writes only at its end time, and that write (the solver's
+"output" part) is left out of the rate.
+
+Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
+                                         [--factors 2 1 0.5] [--end-time T]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
+Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
+fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
+wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
+box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
 """
 import argparse
 import os
@@ -30,16 +58,33 @@ def prepare(case, spacing_factor):
     with open(generate) as f:
         text = f.read()
     spacing = float(re.search(r"(?m)^spacing\s+([0-9.e+-]+);", text).group(1)) * spacing_factor
+    text = re.sub(r"(?m)^spacing\s+[0-9.e+-]+;", "spacing     %.10g;" % spacing, text)
+    # Boxes need whole numbers of spacings: each max moves to the nearest one from its min.
+    def whole(match):
+        lo = [float(v) for v in match.group(1).split()]
+        hi = [float(v) for v in match.group(2).split()]
+        hi = [a + max(1, round((b - a) / spacing)) * spacing for a, b in zip(lo, hi)]
+        return "min (%s); max (%s);" % (match.group(1), " ".join("%.10g" % v for v in hi))
+    regions = re.search(r"(?m)^fluid\b", text).start()  # the domain, before, keeps its bounds
+    text = text[:regions] + re.sub(r"min \(([^)]*)\); max \(([^)]*)\);", whole, text[regions:])
     with open(generate, "w") as f:
-        f.write(re.sub(r"(?m)^spacing\s+[0-9.e+-]+;", "spacing     %.10g;" % spacing, text))
+        f.write(text)
     subprocess.run([os.path.join(BIN, "generateParticles"), "-case", directory], check=True, stdout=subprocess.DEVNULL)
     return directory
 
 
-def run(directory, threads):
+def run(directory, threads, end_time=None):
     for name in os.listdir(directory):
         if re.fullmatch(r"[0-9.e+-]+", name) and name != "0":
             shutil.rmtree(os.path.join(directory, name))
+    if end_time is not None:
+        control = os.path.join(directory, "system/controlDict")
+        with open(control) as f:
+            text = f.read()
+        text = re.sub(r"(?m)^endTime\s+[^;]+;", "endTime %g;" % end_time, text)
+        text = re.sub(r"(?m)^writeInterval\s+[^;]+;", "writeInterval %g;" % end_time, text)
+        with open(control, "w") as f:
+            f.write(text)
     log_path = os.path.join(directory, "log.wcsph.%d" % threads)
     with open(log_path, "w") as log:
         process = subprocess.Popen([os.path.join(BIN, "wcsph"), "-case", directory], stdout=log, stderr=subprocess.STDOUT,
@@ -63,20 +108,22 @@ def main():
     parser.add_argument("--case", default="damBreak2D")
     parser.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--scaling", action="store_true", help="also at 4x fewer and 4x more particles (2D: spacing x2, x0.5)")
+    parser.add_argument("--factors", type=float, nargs="+", help="spacing factors to run (default 1, or 2 1 0.5 with --scaling)")
+    parser.add_argument("--end-time", type=float, help="simulated time of each run (default: the case's endTime)")
     args = parser.parse_args()
-    factors = [2.0, 1.0, 0.5] if args.scaling else [1.0]
+    factors = args.factors or ([2.0, 1.0, 0.5] if args.scaling else [1.0])
     print("| case | fluid + wall particles | threads | steps | time loop [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle |")
     print("|---|---|---|---|---|---|---|---|---|")
     peaks = []
     for factor in factors:
         directory = prepare(args.case, factor)
         for threads in args.threads:
-            r = run(directory, threads)
+            r = run(directory, threads, args.end_time)
             peaks.append((r["fluid"] + r["walls"], r["peak"]))
             print("| %s dx x%g | %d + %d | %d | %d | %.1f | %.3g | %.3g | %.0f MB | %.0f |" % (
                 args.case, factor, r["fluid"], r["walls"], threads, r["steps"], r["wall"], r["rate"], r["rateAll"], r["peak"] / 1e6,
                 r["peak"] / (r["fluid"] + r["walls"])), flush=True)
-    if args.scaling:
+    if len(peaks) > 1 and max(peaks)[0] > min(peaks)[0]:
         # The peak includes the libraries and buffers any run has: the difference isolates what a particle costs.
         (small, peakSmall), (large, peakLarge) = min(peaks), max(peaks)
         print("\nmemory per particle (largest minus smallest run): %.0f bytes" % ((peakLarge - peakSmall) / (large - small)))

@@ -1,0 +1,153 @@
+// The symmetric pair loop (each fluid pair once, per-thread accumulators) against a direct
+// O(N^2) sum of every term written out here from the papers' formulas: a disordered block of
+// fluid with random velocities and densities, pressure + continuity + artificial viscosity +
+// Fourtakas diffusion, in 2D and 3D, with one and two threads.
+#include "physics/FluidSystem.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+
+namespace {
+
+using namespace sph;
+
+template <int D>
+struct Scene {
+    double dx = 0.02, h = 1.3 * 0.02, rho0 = 1000.0, c0 = 20.0, gamma = 7.0, alpha = 0.1, delta = 0.1;
+    Vec<D> gravity = Vec<D>::Unit(D - 1) * -9.81;
+    int perSide = D == 2 ? 24 : 10;
+};
+
+template <int D>
+ParticleSet<D> disorderedBlock(const Scene<D>& s, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    ParticleSet<D> fluid("fluid");
+    std::size_t count = 1;
+    for (int d = 0; d < D; ++d) count *= static_cast<std::size_t>(s.perSide);
+    fluid.resize(count);
+    auto& rho = fluid.addScalar("density", s.rho0);
+    auto& m = fluid.addScalar("mass", s.rho0 * std::pow(s.dx, D));
+    auto& v = fluid.addVector("velocity", Vec<D>::Zero());
+    for (std::size_t k = 0; k < count; ++k) {
+        std::size_t rest = k;
+        for (int d = 0; d < D; ++d) {
+            fluid.position[k][d] = (static_cast<double>(rest % static_cast<std::size_t>(s.perSide)) + 0.5 + 0.3 * unit(random)) * s.dx;
+            rest /= static_cast<std::size_t>(s.perSide);
+            v[k][d] = 0.5 * unit(random);
+        }
+        rho[k] = s.rho0 * (1.0 + 0.01 * unit(random));
+        m[k] *= 1.0 + 0.05 * unit(random);
+        fluid.globalId[k] = static_cast<std::int64_t>(k);
+    }
+    return fluid;
+}
+
+template <int D>
+void compareWithDirectSum(int threads) {
+    const Scene<D> s;
+    const WendlandC2<D> kernel(s.h);
+    const TaitEquationOfState eos(s.rho0, s.c0, s.gamma, 0.0);
+    FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0),
+                          Fourtakas2019<D>(s.delta, s.h, s.c0, s.rho0, eos.B, s.gamma), DensityFormulation::Continuity};
+    ParticleSet<D> walls("walls");
+    walls.addScalar("mass", 0.0);
+    FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), std::move(walls), {}, Vec<D>::Constant(-0.1),
+                          Vec<D>::Constant(s.perSide * s.dx + 0.1), s.gravity, 0.0);
+    omp_set_num_threads(threads);
+    system.evaluateRates(1.0);
+    omp_set_num_threads(omp_get_num_procs());
+
+    const auto& x = system.fluid.position;
+    const auto& v = system.fluid.vector("velocity");
+    const auto& m = system.fluid.scalar("mass");
+    const auto& rho = system.fluid.scalar("density");
+    const double radius = 2.0 * s.h, eta2 = 0.01 * s.h * s.h;
+    double worstAcceleration = 0.0, worstRate = 0.0, scaleAcceleration = 0.0, scaleRate = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        Vec<D> a = s.gravity;
+        double drho = 0.0;
+        const double pi = eos.pressure(rho[i]);
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            const Vec<D> r = x[i] - x[j];
+            const double distance = r.norm();
+            if (j == i || distance >= radius) continue;
+            const Vec<D> gradW = kernel.gradientFactor(distance) * r;
+            const Vec<D> vij = v[i] - v[j];
+            const double pj = eos.pressure(rho[j]);
+            a -= m[j] * (pi / (rho[i] * rho[i]) + pj / (rho[j] * rho[j])) * gradW;
+            const double vr = vij.dot(r);
+            if (vr < 0.0) {  // Monaghan (1992)
+                const double mu = s.h * vr / (r.squaredNorm() + eta2);
+                a -= m[j] * (-s.alpha * s.c0 * mu / (0.5 * (rho[i] + rho[j]))) * gradW;
+            }
+            drho += m[j] * vij.dot(gradW);
+            // Fourtakas et al. (2019): rho^H_ji = rho0 [(1 - rho0 g.r_ij / B)^(1/gamma) - 1]
+            const double hydrostatic = s.rho0 * (std::pow(1.0 - s.rho0 * s.gravity.dot(r) / eos.B, 1.0 / s.gamma) - 1.0);
+            drho += 2.0 * s.delta * s.h * s.c0 * ((rho[i] - rho[j]) + hydrostatic) * r.dot(gradW) / (r.squaredNorm() + eta2) * m[j] / rho[j];
+        }
+        worstAcceleration = std::max(worstAcceleration, (system.fluid.vector("acceleration")[i] - a).norm());
+        worstRate = std::max(worstRate, std::abs(system.fluid.scalar("densityRate")[i] - drho));
+        scaleAcceleration = std::max(scaleAcceleration, a.norm());
+        scaleRate = std::max(scaleRate, std::abs(drho));
+    }
+    EXPECT_LT(worstAcceleration, 1e-11 * scaleAcceleration) << D << "D, " << threads << " threads";
+    EXPECT_LT(worstRate, 1e-11 * scaleRate) << D << "D, " << threads << " threads";
+    EXPECT_GT(scaleRate, 0.0);
+}
+
+template <class Viscosity>
+concept HasPairFactor = requires(const Viscosity& viscosity) { viscosity.pairFactor(0.0, 0.0, 0.0, 0.0, 0.0, 0.0); };
+
+}  // namespace
+
+TEST(PairLoop, EqualsTheDirectSumIn2D) {
+    compareWithDirectSum<2>(1);
+    compareWithDirectSum<2>(2);
+}
+
+TEST(PairLoop, EqualsTheDirectSumIn3D) {
+    compareWithDirectSum<3>(1);
+    compareWithDirectSum<3>(2);
+}
+
+TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
+    const double rho0 = 1000.0, B = 20.0 * 20.0 * rho0 / 7.0;
+    Fourtakas2019<2> diffusion(0.1, 0.02, 20.0, rho0, B, 7.0);
+    diffusion.setGravity(Vec<2>(0.0, -9.81), 0.04);  // |y| <= 6.9e-5: the series
+    ASSERT_TRUE(diffusion.seriesHolds);
+    for (double y : {-0.0199, -1e-3, -3e-6, 0.0, 2e-7, 5e-4, 0.0199}) {
+        const double exact = rho0 * (std::pow(1.0 + y, 1.0 / 7.0) - 1.0);
+        EXPECT_NEAR(diffusion.hydrostaticDensity(y), exact, 4e-16 * rho0 + 1e-14 * std::abs(exact)) << y;
+    }
+    diffusion.setGravity(Vec<2>(0.0, -9.81), 10.0);  // |y| up to 0.017 * 10 / 0.04: beyond it, std::pow
+    EXPECT_FALSE(diffusion.seriesHolds);
+    EXPECT_DOUBLE_EQ(diffusion.hydrostaticDensity(0.3), rho0 * (std::pow(1.3, 1.0 / 7.0) - 1.0));
+}
+
+TEST(PairLoop, InviscidSceneAllocatesAndEvaluatesNoViscousTerm) {
+    // No viscous term can be evaluated: NoViscosity has no pair factor for the loop to call.
+    static_assert(!HasPairFactor<NoViscosity>);
+    static_assert(HasPairFactor<ArtificialViscosityMonaghan1992> && HasPairFactor<LaminarViscosityMorris1997>);
+    const Scene<2> s;
+    const auto build = [&](Viscosity viscosity) {
+        ParticleSet<2> walls("walls");
+        walls.addScalar("mass", 0.0);
+        FluidModels<2> models{WendlandC2<2>(s.h), TaitEquationOfState(s.rho0, s.c0, s.gamma, 0.0), viscosity, NoDensityDiffusion{},
+                              DensityFormulation::Continuity};
+        return std::make_unique<FluidSystem<2>>(std::move(models), disorderedBlock(s, 3), std::move(walls), std::vector<Patch<2>>{},
+                                                Vec<2>::Constant(-0.1), Vec<2>::Constant(1.0), s.gravity, 0.0);
+    };
+    const auto inviscid = build(NoViscosity{});
+    inviscid->evaluateRates(0.0);
+    // The loop's copies: no density (read by viscosity and diffusion only), no viscous wall velocity.
+    EXPECT_TRUE(inviscid->cellOrderedFluid().density.empty());
+    EXPECT_TRUE(inviscid->cellOrderedFluid().volume.empty());
+    EXPECT_FALSE(inviscid->walls.hasVector("viscousVelocity"));
+    const auto viscous = build(ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0));
+    viscous->evaluateRates(0.0);
+    EXPECT_EQ(viscous->cellOrderedFluid().density.size(), viscous->fluid.size());
+    EXPECT_GT(viscous->cellOrderedFluid().bytes(), inviscid->cellOrderedFluid().bytes());
+}
