@@ -13,31 +13,6 @@ Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam br
 fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
 wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
 box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
-"""Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
---scaling, at 4x fewer and 4x more particles) and prints particles, steps, wall time,
-particle-steps per second and peak memory (also per particle: with --scaling, the difference
-between the largest and the smallest run over their particle counts), as a Markdown table. The time loop is
-timed by the solver itself, without start-up; the case writes only at its end time, and that
-write (the solver's "output" part) is left out of the rate.
-
-Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
-Cases: utilities/benchmark/<case>/ (damBreak2D: DualSPHysics' standard 2D dam break, 20,000
-fluid particles, 0.25 s).
-"""Throughput benchmark: runs a benchmark case with wcsph at 1 and 2 threads (and, with
---scaling, at other particle counts) and prints particles, steps, wall time, particle-steps per
-second and peak memory (also per particle: the difference between the largest and the smallest
-run over their particle counts), as a Markdown table. The time loop is timed by the solver
-itself, without start-up; the case writes only at its end time, and that write (the solver's
-"output" part) is left out of the rate.
-
-Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
-                                         [--factors 2 1 0.5] [--end-time T]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
-Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
-fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
-wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
-box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
 """
 import argparse
 import os
