@@ -58,8 +58,26 @@ struct Fourtakas2019 {
         for (int d = 0; d < D; ++d) gDotR += gravity[d] * rij[static_cast<std::size_t>(d)];
         const double y = -rho0OverStiffness * gDotR;
         const double common = coefficient * F * r2 * inverseRegularisedR2;
-        toI = common * ((rhoi - rhoj) + hydrostaticDensity(y));
-        toJ = common * ((rhoj - rhoi) + hydrostaticDensity(-y));
+        double up, down;
+        if (seriesHolds) {
+            // Both signs of y at once: the odd terms y P(y^2) change sign, the even y^2 Q(y^2) do not.
+            static_assert(seriesTerms % 2 == 0);
+            const double y2 = y * y;
+            double odd = series[seriesTerms - 2], even = series[seriesTerms - 1];
+            for (std::size_t k = seriesTerms - 2; k >= 2; k -= 2) {
+                odd = series[k - 2] + y2 * odd;
+                even = series[k - 1] + y2 * even;
+            }
+            odd *= y;
+            even *= y2;
+            up = even + odd;
+            down = even - odd;
+        } else {
+            up = hydrostaticDensity(y);
+            down = hydrostaticDensity(-y);
+        }
+        toI = common * ((rhoi - rhoj) + up);
+        toJ = common * ((rhoj - rhoi) + down);
     }
 
     double delta, coefficient, rho0, rho0OverStiffness, inverseExponent;

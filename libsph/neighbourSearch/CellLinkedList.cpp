@@ -39,11 +39,13 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
     for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
     sorted_.resize(n);
     sortedPosition_.resize(n);
+    sortedCell_.resize(n);
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t place = fill[cellOf[k]]++;
         sorted_[place] = static_cast<std::uint32_t>(begin + k);
         sortedPosition_[place] = points[begin + k];
+        sortedCell_[place] = cellOf[k];
     }
 }
 

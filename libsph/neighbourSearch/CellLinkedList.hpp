@@ -49,8 +49,13 @@ public:
     // Calls visit(j, x - x_j, |x - x_j|^2) for every point j with |x - x_j| < radius.
     template <class Visit>
     void forEachNeighbour(const Vec<D>& x, double radius, Visit&& visit) const {
+        forEachNeighbour(stencilRanges(x), x, radius, visit);
+    }
+    // The same with the stencil of x's cell computed before (shared by the points of a cell).
+    template <class Visit>
+    void forEachNeighbour(const StencilRanges& stencil, const Vec<D>& x, double radius, Visit&& visit) const {
         const double radius2 = radius * radius;
-        for (const Range& range : stencilRanges(x)) {
+        for (const Range& range : stencil) {
             for (std::uint32_t k = range.begin; k < range.end; ++k) {
                 Vec<D> r = x - sortedPosition_[k];
                 if (anyPeriodic_) nearestImage(r);
@@ -74,6 +79,9 @@ public:
     // The points in cell order: place k holds point sortedIndex(k).
     std::size_t pointCount() const { return sorted_.size(); }
     std::uint32_t sortedIndex(std::size_t k) const { return sorted_[k]; }
+    // The cell of place k: consecutive places in one cell share their stencil ranges, and a
+    // list built with the same grid (domain, radius, periodicity) numbers its cells the same.
+    std::uint32_t cellAt(std::size_t k) const { return sortedCell_[k]; }
 
     // Shortest separation vector under the periodic directions.
     void nearestImage(Vec<D>& r) const {
@@ -110,6 +118,7 @@ private:
     std::vector<std::uint32_t> cellStart_;  // size cells + 1
     std::vector<std::uint32_t> sorted_;     // cell order -> point index
     std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries
+    std::vector<std::uint32_t> sortedCell_;  // cell of each place
 };
 
 }  // namespace sph

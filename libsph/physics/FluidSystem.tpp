@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <omp.h>
 #include <stdexcept>
@@ -11,6 +12,23 @@
 static_assert(sizeof(sph::Vec<3>) == 3 * sizeof(double) && sizeof(sph::Vec<2>) == 2 * sizeof(double), "the pair loop reads Vec<D> arrays as doubles");
 
 namespace sph {
+
+// Whether this build compiles the pair loops of dimension D (CMake option SPHKIT_DIMENSIONS;
+// the case reader rejects the others). The rest of the system exists in every dimension.
+template <int D>
+inline constexpr bool dimensionCompiled = false;
+#ifdef SPHKIT_HAS_1D
+template <>
+inline constexpr bool dimensionCompiled<1> = true;
+#endif
+#ifdef SPHKIT_HAS_2D
+template <>
+inline constexpr bool dimensionCompiled<2> = true;
+#endif
+#ifdef SPHKIT_HAS_3D
+template <>
+inline constexpr bool dimensionCompiled<3> = true;
+#endif
 
 template <int D>
 FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
@@ -208,18 +226,22 @@ template <int D>
 void FluidSystem<D>::computeSummationDensity() {
     std::visit(
         [this](const auto& kernel) {
-            const std::size_t n = fluid.ownedCount();
-            const Vec<D>* x = fluid.position.data();
-            const double* mass = fluid.scalar("mass").data();
-            const double* wallMass = walls.scalar("mass").data();
-            double* rho = fluid.scalar("density").data();
-            const double radius = supportRadius_;
+            if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>> || !dimensionCompiled<D>) {
+                throw std::logic_error("this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it");
+            } else {
+                const std::size_t n = fluid.ownedCount();
+                const Vec<D>* x = fluid.position.data();
+                const double* mass = fluid.scalar("mass").data();
+                const double* wallMass = walls.scalar("mass").data();
+                double* rho = fluid.scalar("density").data();
+                const double radius = supportRadius_;
 #pragma omp parallel for schedule(static)
-            for (std::size_t i = 0; i < n; ++i) {
-                double sum = 0.0;
-                fluidCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
-                wallCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += wallMass[j] * kernel.value(std::sqrt(r2)); });
-                rho[i] = sum;
+                for (std::size_t i = 0; i < n; ++i) {
+                    double sum = 0.0;
+                    fluidCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
+                    wallCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += wallMass[j] * kernel.value(std::sqrt(r2)); });
+                    rho[i] = sum;
+                }
             }
         },
         models_.kernel);
@@ -301,6 +323,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
         const auto thread = static_cast<std::size_t>(omp_get_thread_num());
         const auto team = static_cast<std::size_t>(omp_get_num_threads());
         std::vector<std::uint32_t> neighbours(64);
+        auto stencilCell = std::numeric_limits<std::uint32_t>::max();
+        typename CellLinkedList<D>::StencilRanges stencil;
         std::vector<Vec<D>>& accelerationOfThread = ordered.acceleration[thread];
         accelerationOfThread.assign(n, Vec<D>::Zero());
         double* const as = accelerationOfThread.data()->data();  // D doubles per place
@@ -332,8 +356,12 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
             // are neighbours: a branch would be mispredicted often), then visited. (Vectorising
             // the visit with `omp simd` was measured 10-20 % slower: ten pairs per particle
             // leave AVX2's gathers and masked tails too little to amortise.)
+            if (cells.cellAt(k) != stencilCell) {  // the particles of a cell share their stencil
+                stencilCell = cells.cellAt(k);
+                stencil = cells.stencilRanges(cells.sortedPosition(k));
+            }
             std::size_t count = 0;
-            for (const auto& range : cells.stencilRanges(cells.sortedPosition(k))) {
+            for (const auto& range : stencil) {
                 const std::size_t begin = std::max<std::size_t>(range.begin, k + 1);
                 if (begin >= range.end) continue;
                 if (neighbours.size() < count + (range.end - begin)) neighbours.resize(2 * (count + (range.end - begin)));
@@ -399,6 +427,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
         }
 #pragma omp barrier
 
+        auto wallStencilCell = std::numeric_limits<std::uint32_t>::max();
+        typename CellLinkedList<D>::StencilRanges wallStencil;
 #pragma omp for schedule(static, chunk)
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t i = cells.sortedIndex(k);
@@ -410,7 +440,11 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 if constexpr (DensityRate) densityRate += ordered.densityRate[t][k];
             }
             [[maybe_unused]] const double pOverRho2 = p[i] / (rho[i] * rho[i]);
-            wallCells.forEachNeighbour(x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+            if (cells.cellAt(k) != wallStencilCell) {  // the wall list has the fluid list's grid
+                wallStencilCell = cells.cellAt(k);
+                wallStencil = wallCells.stencilRanges(x[i]);
+            }
+            wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
                 const double F = kernel.gradientFactor(std::sqrt(r2));
                 if constexpr (Pressure) acceleration -= (mWall[w] * (pOverRho2 + pWall[w] / (rhoWall[w] * rhoWall[w])) * F) * r;
                 if constexpr (DensityRate) densityRate += mWall[w] * F * (v[i] - vWall[w]).dot(r);
@@ -433,8 +467,8 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->setGravity(gravity, supportRadius_);
     const auto dispatch = [&]<bool ViscousOnly>(const auto& kernel, const auto& viscosity, const auto& diffusion) {
         using Diffusion = std::decay_t<decltype(diffusion)>;
-        if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>>) {
-            throw std::logic_error("the pair loop of this kernel is not compiled (SPHKIT_KERNELS); the case reader rejects it");
+        if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>> || !dimensionCompiled<D>) {
+            throw std::logic_error("this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it");
         } else if (continuity()) {
             fluidRates<D, true, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);
         } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
