@@ -42,12 +42,25 @@ struct Fourtakas2019 {
         seriesHolds = rho0OverStiffness * g.norm() * maxSeparation < seriesLimit;
     }
 
-    // rho0 [(1 + y)^(1/n) - 1]
-    double hydrostaticDensity(double y) const {
-        if (!seriesHolds) return rho0 * (std::pow(1.0 + y, inverseExponent) - 1.0);
-        double sum = series[seriesTerms - 1];
-        for (int k = seriesTerms - 2; k >= 0; --k) sum = series[static_cast<std::size_t>(k)] + y * sum;
-        return y * sum;
+    // rho0 [(1 + y)^(1/n) - 1] at y and at -y, as a pair needs both.
+    void hydrostaticDensities(double y, double& atY, double& atMinusY) const {
+        if (!seriesHolds) {
+            atY = rho0 * (std::pow(1.0 + y, inverseExponent) - 1.0);
+            atMinusY = rho0 * (std::pow(1.0 - y, inverseExponent) - 1.0);
+            return;
+        }
+        // The odd terms y P(y^2) change sign with y, the even y^2 Q(y^2) do not.
+        static_assert(seriesTerms % 2 == 0);
+        const double y2 = y * y;
+        double odd = series[seriesTerms - 2], even = series[seriesTerms - 1];
+        for (std::size_t k = seriesTerms - 2; k >= 2; k -= 2) {
+            odd = series[k - 2] + y2 * odd;
+            even = series[k - 1] + y2 * even;
+        }
+        odd *= y;
+        even *= y2;
+        atY = even + odd;
+        atMinusY = even - odd;
     }
 
     // The pair (i, j) adds toI V_j to i's density rate and toJ V_i to j's, V = m / rho, from
@@ -59,23 +72,7 @@ struct Fourtakas2019 {
         const double y = -rho0OverStiffness * gDotR;
         const double common = coefficient * F * r2 * inverseRegularisedR2;
         double up, down;
-        if (seriesHolds) {
-            // Both signs of y at once: the odd terms y P(y^2) change sign, the even y^2 Q(y^2) do not.
-            static_assert(seriesTerms % 2 == 0);
-            const double y2 = y * y;
-            double odd = series[seriesTerms - 2], even = series[seriesTerms - 1];
-            for (std::size_t k = seriesTerms - 2; k >= 2; k -= 2) {
-                odd = series[k - 2] + y2 * odd;
-                even = series[k - 1] + y2 * even;
-            }
-            odd *= y;
-            even *= y2;
-            up = even + odd;
-            down = even - odd;
-        } else {
-            up = hydrostaticDensity(y);
-            down = hydrostaticDensity(-y);
-        }
+        hydrostaticDensities(y, up, down);
         toI = common * ((rhoi - rhoj) + up);
         toJ = common * ((rhoj - rhoi) + down);
     }

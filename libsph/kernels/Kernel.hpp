@@ -15,7 +15,6 @@ namespace sph {
 template <int D>
 using Kernel = std::variant<CubicSplineMonaghanLattanzio1985<D>, QuinticSplineMorris1997<D>, WendlandC2<D>, WendlandC4<D>>;
 
-// Factory argument: the smoothing length h.
 // Whether this build compiled the hot loops for a kernel (CMake option SPHKIT_KERNELS).
 template <class K>
 inline constexpr bool compiledKernel = false;
@@ -37,6 +36,7 @@ inline constexpr bool compiledKernel<WendlandC4<D>> = true;
 #endif
 inline constexpr const char* compiledKernelNames = SPHKIT_COMPILED_KERNELS;
 
+// Factory argument: the smoothing length h.
 template <int D>
 using KernelRegistry = Registry<Kernel<D>, double>;
 

@@ -68,8 +68,8 @@ public:
     // Positions in cell order (of the last build); each pair once: the neighbours of place k
     // at later places l are those of stencilRanges(sortedPosition(k)) with l > k.
     const Vec<D>& sortedPosition(std::size_t k) const { return sortedPosition_[k]; }
-    // Per direction, the period and its inverse, both 0 where not periodic: r - L nearbyint(r / L)
-    // is then the nearest image's separation with no branch.
+    // Per direction, the period L, 0 where not periodic: r - L nearbyint(r / L) (with 1/L taken
+    // as 0 there) is then the nearest image's separation with no branch.
     std::array<double, D> periods() const {
         std::array<double, D> lengths{};
         for (int d = 0; d < D; ++d) lengths[static_cast<std::size_t>(d)] = periodic_[static_cast<std::size_t>(d)] ? extent_[d] : 0.0;

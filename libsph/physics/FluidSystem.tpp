@@ -29,6 +29,9 @@ inline constexpr bool dimensionCompiled<2> = true;
 template <>
 inline constexpr bool dimensionCompiled<3> = true;
 #endif
+template <int D, class Kernel>
+inline constexpr bool pairLoopsCompiled = dimensionCompiled<D> && compiledKernel<Kernel>;
+constexpr const char* pairLoopsNotCompiled = "this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it";
 
 template <int D>
 FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
@@ -226,8 +229,8 @@ template <int D>
 void FluidSystem<D>::computeSummationDensity() {
     std::visit(
         [this](const auto& kernel) {
-            if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>> || !dimensionCompiled<D>) {
-                throw std::logic_error("this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it");
+            if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
+                throw std::logic_error(pairLoopsNotCompiled);
             } else {
                 const std::size_t n = fluid.ownedCount();
                 const Vec<D>* x = fluid.position.data();
@@ -467,8 +470,8 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->setGravity(gravity, supportRadius_);
     const auto dispatch = [&]<bool ViscousOnly>(const auto& kernel, const auto& viscosity, const auto& diffusion) {
         using Diffusion = std::decay_t<decltype(diffusion)>;
-        if constexpr (!compiledKernel<std::decay_t<decltype(kernel)>> || !dimensionCompiled<D>) {
-            throw std::logic_error("this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it");
+        if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
+            throw std::logic_error(pairLoopsNotCompiled);
         } else if (continuity()) {
             fluidRates<D, true, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);
         } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density

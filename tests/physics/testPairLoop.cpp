@@ -120,11 +120,18 @@ TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
     ASSERT_TRUE(diffusion.seriesHolds);
     for (double y : {-0.0199, -1e-3, -3e-6, 0.0, 2e-7, 5e-4, 0.0199}) {
         const double exact = rho0 * (std::pow(1.0 + y, 1.0 / 7.0) - 1.0);
-        EXPECT_NEAR(diffusion.hydrostaticDensity(y), exact, 4e-16 * rho0 + 1e-14 * std::abs(exact)) << y;
+        const double exactMinus = rho0 * (std::pow(1.0 - y, 1.0 / 7.0) - 1.0);
+        double atY = 0.0, atMinusY = 0.0;
+        diffusion.hydrostaticDensities(y, atY, atMinusY);
+        EXPECT_NEAR(atY, exact, 4e-16 * rho0 + 1e-14 * std::abs(exact)) << y;
+        EXPECT_NEAR(atMinusY, exactMinus, 4e-16 * rho0 + 1e-14 * std::abs(exactMinus)) << y;
     }
     diffusion.setGravity(Vec<2>(0.0, -9.81), 10.0);  // |y| up to 0.017 * 10 / 0.04: beyond it, std::pow
     EXPECT_FALSE(diffusion.seriesHolds);
-    EXPECT_DOUBLE_EQ(diffusion.hydrostaticDensity(0.3), rho0 * (std::pow(1.3, 1.0 / 7.0) - 1.0));
+    double atY = 0.0, atMinusY = 0.0;
+    diffusion.hydrostaticDensities(0.3, atY, atMinusY);
+    EXPECT_DOUBLE_EQ(atY, rho0 * (std::pow(1.3, 1.0 / 7.0) - 1.0));
+    EXPECT_DOUBLE_EQ(atMinusY, rho0 * (std::pow(0.7, 1.0 / 7.0) - 1.0));
 }
 
 TEST(PairLoop, InviscidSceneAllocatesAndEvaluatesNoViscousTerm) {
