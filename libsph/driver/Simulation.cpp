@@ -38,20 +38,50 @@ struct FunctionObjectEntry {
 
 template <int D>
 std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& controlDict, const std::filesystem::path& caseDirectory,
-                                                        double startTime, double rho0) {
+                                                        double startTime, double rho0, const FluidSystem<D>& system) {
     std::vector<FunctionObjectEntry<D>> entries;
     const Dictionary* functions = controlDict.findSubDict("functions");
     if (!functions) return entries;
     const auto registry = makeFunctionObjectRegistry<D>();
     for (const std::string& name : functions->keywords()) {
         const Dictionary& dict = functions->subDict(name);
-        const FunctionObjectContext context{caseDirectory / "postProcessing" / name / timeName(startTime), rho0};
+        const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system};
         auto object = selectByType(registry, dict, dict, context);
         const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
         fmt::print("Selecting function object {} ({})\n", name, object->describe());
         entries.push_back({name, std::move(object), interval, startTime});
     }
     return entries;
+}
+
+struct RunCost {
+    double wallSeconds;
+    std::size_t fluidParticles;
+    long steps;
+};
+
+// A run whose function objects compare with a reference ends with one line of every error
+// against the run's cost, and the same in postProcessing/summary/<startTime>/summary.csv.
+template <int D>
+void reportErrorAgainstCost(const std::vector<FunctionObjectEntry<D>>& functionObjects, const std::filesystem::path& caseDirectory, double startTime,
+                            double endTime, const RunCost& cost) {
+    std::vector<std::string> figures;
+    std::string csv = "functionObject,quantity,L1,L2,Linf,normalisation,wallTime_s,fluidParticles,steps,particleSteps_per_s,startTime,endTime\n";
+    const double rate = cost.wallSeconds > 0.0 ? static_cast<double>(cost.fluidParticles) * static_cast<double>(cost.steps) / cost.wallSeconds : 0.0;
+    for (const auto& entry : functionObjects)
+        for (const ReportedError& error : entry.object->errors()) {
+            figures.push_back(fmt::format("{} {}: L1 {:.3e}, L2 {:.3e}, Linf {:.3e} ({})", entry.name, error.quantity, error.norms.l1, error.norms.l2,
+                                          error.norms.linf, error.normalisation));
+            csv += fmt::format("{},{},{:.6e},{:.6e},{:.6e},\"{}\",{:.4f},{},{},{:.6e},{:.9g},{:.9g}\n", entry.name, error.quantity, error.norms.l1,
+                               error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate, startTime,
+                               endTime);
+        }
+    if (figures.empty()) return;
+    fmt::print("Error against run time: {}; wall time {:.2f} s, {} fluid particles, {} steps\n", fmt::join(figures, "; "), cost.wallSeconds, cost.fluidParticles,
+               cost.steps);
+    const auto directory = caseDirectory / "postProcessing" / "summary" / timeName(startTime);
+    std::filesystem::create_directories(directory);
+    writeTextAtomically(directory / "summary.csv", csv);
 }
 
 // A blown-up run stops with the step, time, particle and quantity.
@@ -95,7 +125,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
     for (const Patch<D>& patch : system.patches)
         if (patch.motion) patch.motion->checkCovers(startTime, controls.endTime);
-    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, startTime, setup.rho0);
+    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, startTime, setup.rho0, system);
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
 
@@ -216,10 +246,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         printPart(stageNames[s], seconds);
     }
     printPart("other", std::max(0.0, wall - accounted));  // solver internals (SUNDIALS), checks, progress
-    for (const auto& entry : functionObjects) {
-        const std::string summary = entry.object->summary();
-        if (!summary.empty()) fmt::print("{}: {}\n", entry.name, summary);
-    }
+    reportErrorAgainstCost(functionObjects, caseDirectory, startTime, t, {wall, system.fluid.size(), steps});
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 namespace sph {
 
 template <int D>
-BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
+BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext<D>& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
     if constexpr (D != 2) dict.fail("type", "bodyMotion reports 2D free bodies only");
     out_ = TimeSeriesFile(context.outputDirectory, "body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
 }

@@ -14,7 +14,7 @@ namespace sph {
 template <int D>
 class BodyMotion : public FunctionObject<D> {
 public:
-    BodyMotion(const Dictionary& dict, const FunctionObjectContext& context);
+    BodyMotion(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override { return "bodyMotion: patch " + patch_; }
     void execute(const FluidSystem<D>& system, double t) override;
 

@@ -1,30 +1,64 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include "functionObjects/BodyMotion.hpp"
+#include "functionObjects/ColumnHeight.hpp"
+#include "functionObjects/FieldErrorNorm.hpp"
+#include "functionObjects/FieldTotals.hpp"
 #include "functionObjects/LineSample.hpp"
+#include "functionObjects/Probes.hpp"
 #include "functionObjects/SurgeFront.hpp"
 
 namespace sph {
 
+namespace {
+
+template <class Object, int D>
+void add(FunctionObjectRegistry<D>& registry, const std::string& name, ModelDoc doc) {
+    registry.add(name, std::move(doc), [](const Dictionary& dict, const FunctionObjectContext<D>& context) -> std::unique_ptr<FunctionObject<D>> {
+        return std::make_unique<Object>(dict, context);
+    });
+}
+
+}  // namespace
+
 template <int D>
 FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
     const CoefficientDoc interval{"executeInterval", "0", "simulated time between executions (0: every step)"};
+    const CoefficientDoc reference{"reference", "none",
+                                   "{ file; time; columns (...); timeScale; valueScale; scale; }: error "
+                                   "over time against a CSV"};
     FunctionObjectRegistry<D> registry("function object");
-    registry.add("surgeFront", {"leading fluid particle along a direction, over time", "Martin & Moyce, Phil. Trans. R. Soc. A 244 (1952) 312",
-                                {{"origin", "", "point the front is measured from"}, {"direction", "", "direction of the surge"}, interval}},
-                 [](const Dictionary& dict, const FunctionObjectContext& context) -> std::unique_ptr<FunctionObject<D>> {
-                     return std::make_unique<SurgeFront<D>>(dict, context);
-                 });
-    registry.add("lineSample", {"kernel-interpolated p and rho along a line, optional hydrostatic error", "",
-                                {{"start", "", "first point"}, {"end", "", "last point"}, {"points", "", "number of samples (>= 2)"},
-                                 {"hydrostaticReference", "none", "{ freeSurfaceHeight H; }: error against rho0 |g| (H - z)"}, interval}},
-                 [](const Dictionary& dict, const FunctionObjectContext& context) -> std::unique_ptr<FunctionObject<D>> {
-                     return std::make_unique<LineSample<D>>(dict, context);
-                 });
-    registry.add("bodyMotion", {"position, angle, velocities and fluid loads of a free body (2D)", "", {{"patch", "", "the body's patch"}, interval}},
-                 [](const Dictionary& dict, const FunctionObjectContext& context) -> std::unique_ptr<FunctionObject<D>> {
-                     return std::make_unique<BodyMotion<D>>(dict, context);
-                 });
+    add<SurgeFront<D>>(registry, "surgeFront",
+                       {"leading fluid particle along a direction, over time",
+                        "Martin & Moyce, Phil. Trans. R. Soc. A 244 (1952) 312",
+                        {{"origin", "", "point the front is measured from"}, {"direction", "", "direction of the surge"}, reference, interval}});
+    add<LineSample<D>>(registry, "lineSample",
+                       {"kernel-interpolated p and rho along a line, optional hydrostatic error",
+                        "",
+                        {{"start", "", "first point"},
+                         {"end", "", "last point"},
+                         {"points", "", "number of samples (>= 2)"},
+                         {"hydrostaticReference", "none", "{ freeSurfaceHeight H; }: error against rho0 |g| (H - z)"},
+                         interval}});
+    add<BodyMotion<D>>(registry, "bodyMotion",
+                       {"position, angle, velocities and fluid loads of a free body (2D)", "", {{"patch", "", "the body's patch"}, interval}});
+    add<Probes<D>>(registry, "probes",
+                   {"kernel-interpolated fields at points, over time",
+                    "",
+                    {{"points", "", "((x y ...) ...)"}, {"fields", "", "(p rho U Ux Uy Uz)"}, reference, interval}});
+    add<ColumnHeight<D>>(registry, "columnHeight",
+                         {"water height above gauge points, over time",
+                          "",
+                          {{"points", "", "gauge points ((x y ...) ...)"}, {"radius", "h", "reach around the vertical"}, reference, interval}});
+    add<FieldErrorNorm<D>>(registry, "errorNorm",
+                           {"L1, L2, Linf of a field against an analytic solution",
+                            "",
+                            {{"field", "", "U or p"},
+                             {"solution", "", "{ type ...; }: see analytic solutions"},
+                             {"scale", "1", "errors are divided by it"},
+                             {"subtractMean", "no", "compare p up to a constant"},
+                             interval}});
+    add<FieldTotals<D>>(registry, "fieldTotals", {"total mass, kinetic energy and momentum, over time", "", {interval}});
     return registry;
 }
 

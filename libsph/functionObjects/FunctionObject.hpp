@@ -8,20 +8,25 @@
 #pragma once
 
 #include "core/Registry.hpp"
+#include "functionObjects/ErrorNorms.hpp"
 #include "io/Dictionary.hpp"
 
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sph {
 
 template <int D>
 class FluidSystem;
 
+template <int D>
 struct FunctionObjectContext {
+    std::filesystem::path caseDirectory;
     std::filesystem::path outputDirectory;  // postProcessing/<name>/<startTime>
     double rho0;
+    const FluidSystem<D>& system;  // the domain, gravity and models, for checks before the first step
 };
 
 template <int D>
@@ -30,12 +35,12 @@ public:
     virtual ~FunctionObject() = default;
     virtual std::string describe() const = 0;
     virtual void execute(const FluidSystem<D>& system, double t) = 0;
-    // A closing line for the run log (an error figure, say); empty for none.
-    virtual std::string summary() const { return {}; }
+    // Errors against a reference the case declared, for the run's closing summary; none by default.
+    virtual std::vector<ReportedError> errors() const { return {}; }
 };
 
 template <int D>
-using FunctionObjectRegistry = Registry<std::unique_ptr<FunctionObject<D>>, const Dictionary&, const FunctionObjectContext&>;
+using FunctionObjectRegistry = Registry<std::unique_ptr<FunctionObject<D>>, const Dictionary&, const FunctionObjectContext<D>&>;
 
 template <int D>
 FunctionObjectRegistry<D> makeFunctionObjectRegistry();

@@ -1,5 +1,6 @@
 #include "functionObjects/LineSample.hpp"
 
+#include "functionObjects/KernelInterpolation.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/TimeName.hpp"
 #include "physics/FluidSystem.hpp"
@@ -11,7 +12,7 @@
 namespace sph {
 
 template <int D>
-LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext& context)
+LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : start_(dict.getVector<D>("start")), end_(dict.getVector<D>("end")), points_(dict.get<int>("points")), rho0_(context.rho0),
       directory_(context.outputDirectory) {
     if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
@@ -29,29 +30,12 @@ std::string LineSample<D>::describe() const {
 
 template <int D>
 std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSystem<D>& system) const {
-    std::vector<Sample> samples(static_cast<std::size_t>(points_));
-    const double* m = system.fluid.scalar("mass").data();
-    const double* rho = system.fluid.scalar("density").data();
-    const double* p = system.fluid.scalar("pressure").data();
-    const Vec<D>* v = system.fluid.vector("velocity").data();
-    std::visit(
-        [&](const auto& kernel) {
-            for (int s = 0; s < points_; ++s) {
-                const Vec<D> x = start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1));
-                double weight = 0.0, pressure = 0.0, density = 0.0;
-                Vec<D> velocity = Vec<D>::Zero();
-                system.fluidCells().forEachNeighbour(x, system.supportRadius(), [&](std::uint32_t j, const Vec<D>&, double r2) {
-                    const double w = kernel.value(std::sqrt(r2)) * m[j] / rho[j];
-                    weight += w;
-                    pressure += w * p[j];
-                    density += w * rho[j];
-                    velocity += w * v[j];
-                });
-                const double inverse = weight > 0.0 ? 1.0 / weight : 0.0;
-                samples[static_cast<std::size_t>(s)] = {x, pressure * inverse, density * inverse, velocity * inverse};
-            }
-        },
-        system.models().kernel);
+    std::vector<Sample> samples;
+    for (int s = 0; s < points_; ++s) {
+        const Vec<D> x = start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1));
+        const InterpolatedFluid<D> sampled = interpolateFluid(system, x);
+        samples.push_back({x, sampled.pressure, sampled.density, sampled.velocity});
+    }
     return samples;
 }
 
@@ -62,7 +46,7 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
     const double gravity = g.norm();
     const Vec<D> up = gravity > 0.0 ? Vec<D>(-g / gravity) : Vec<D>::Zero();
     std::string csv = freeSurfaceHeight_ ? "distance,x,y,z,p,rho,Ux,Uy,Uz,p_ref\n" : "distance,x,y,z,p,rho,Ux,Uy,Uz\n";
-    double sum2 = 0.0, maxError = 0.0;
+    ErrorAccumulator errors;
     for (const Sample& s : samples) {
         csv += fmt::format("{:.9g}", (s.position - start_).norm());
         for (int d = 0; d < 3; ++d) csv += fmt::format(",{:.9g}", d < D ? s.position[d] : 0.0);
@@ -71,8 +55,7 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
         if (freeSurfaceHeight_) {
             const double reference = rho0_ * gravity * (*freeSurfaceHeight_ - s.position.dot(up));
             csv += fmt::format(",{:.9g}", reference);
-            sum2 += (s.pressure - reference) * (s.pressure - reference);
-            maxError = std::max(maxError, std::abs(s.pressure - reference));
+            errors.add(s.pressure - reference);
         }
         csv += "\n";
     }
@@ -82,16 +65,15 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
     if (freeSurfaceHeight_) {
         const double scale = rho0_ * gravity * *freeSurfaceHeight_;
         time_ = t;
-        l2_ = scale > 0.0 ? std::sqrt(sum2 / points_) / scale : 0.0;
-        max_ = scale > 0.0 ? maxError / scale : 0.0;
-        errorOut_.append(fmt::format("{:.9g} {:.6e} {:.6e}", t, l2_, max_));
+        last_ = scale > 0.0 ? errors.norms(scale) : ErrorNorms{0.0, 0.0, 0.0};
+        errorOut_.append(fmt::format("{:.9g} {:.6e} {:.6e}", t, last_.l2, last_.linf));
     }
 }
 
 template <int D>
-std::string LineSample<D>::summary() const {
+std::vector<ReportedError> LineSample<D>::errors() const {
     if (!freeSurfaceHeight_) return {};
-    return fmt::format("hydrostatic pressure error at t = {:g}: L2 {:.4e}, max {:.4e} (normalised by rho0 g H)", time_, l2_, max_);
+    return {{"hydrostatic p", last_, fmt::format("rho0 |g| H, {} samples at t = {:g}", points_, time_)}};
 }
 
 template class LineSample<1>;

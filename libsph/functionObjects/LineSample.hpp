@@ -1,9 +1,8 @@
-// lineSample: pressure, density and velocity along a line, interpolated from the fluid particles with
-// the Shepard-normalised kernel sum  f(x) = sum_j f_j W(x - x_j) V_j / sum_j W(x - x_j) V_j,
-// V_j = m_j/rho_j. Each execution writes postProcessing/<name>/<t0>/<time>/line.csv
+// lineSample: pressure, density and velocity along a line, interpolated from the fluid particles
+// (KernelInterpolation.hpp). Each execution writes postProcessing/<name>/<t0>/<time>/line.csv
 // (distance, position, p, rho, velocity[, p_ref]). With a hydrostaticReference it compares p with
 // rho0 |g| (H - z), z measured against gravity, and appends to error.dat the L2 and max
-// error over the samples, normalised by rho0 |g| H.
+// error over the samples, normalised by rho0 |g| H; the run's summary reports the last execution's.
 // Example (system/controlDict, functions):
 //   pressure
 //   {
@@ -24,10 +23,10 @@ namespace sph {
 template <int D>
 class LineSample : public FunctionObject<D> {
 public:
-    LineSample(const Dictionary& dict, const FunctionObjectContext& context);
+    LineSample(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
     void execute(const FluidSystem<D>& system, double t) override;
-    std::string summary() const override;
+    std::vector<ReportedError> errors() const override;
 
     struct Sample {
         Vec<D> position;
@@ -44,7 +43,8 @@ private:
     double rho0_;
     std::filesystem::path directory_;
     TimeSeriesFile errorOut_;
-    double l2_ = 0.0, max_ = 0.0, time_ = 0.0;
+    ErrorNorms last_;
+    double time_ = 0.0;
 };
 
 }  // namespace sph

@@ -1,5 +1,8 @@
 #include "generation/FluidRegions.hpp"
 
+#include "analytic/AnalyticSolution.hpp"
+#include "io/SelectByType.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -79,30 +82,17 @@ bool insidePolygon(const std::vector<Vec<2>>& polygon, const Vec<2>& x) {
 
 }  // namespace
 
-std::vector<Vec<2>> readPointList(const Dictionary& dict, const std::string& keyword) {
-    const Entry& entry = dict.entry(keyword);
-    std::vector<Vec<2>> points;
-    const auto& t = entry.tokens();
-    // ((x y) (x y) ...)
-    std::size_t k = 0;
-    const auto bad = [&]() { dict.fail(keyword, "expected a list of 2D points ((x y) (x y) ...)"); };
-    if (entry.isDictionary() || t.size() < 2 || t[k].text != "(") bad();
-    ++k;
-    while (k < t.size() && t[k].text == "(") {
-        if (k + 3 >= t.size() || t[k + 1].kind != Token::Kind::Number || t[k + 2].kind != Token::Kind::Number || t[k + 3].text != ")") bad();
-        points.emplace_back(t[k + 1].number, t[k + 2].number);
-        k += 4;
-    }
-    if (k + 1 != t.size() || t[k].text != ")") bad();
-    return points;
-}
-
-
 template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax) {
     const std::string type = region.get<std::string>("type");
     FluidRegionParticles<D> result;
-    result.velocity = region.found("velocity") ? region.getVector<D>("velocity") : Vec<D>::Zero();
+    if (const Dictionary* field = region.findSubDict("velocity")) {
+        std::shared_ptr<const AnalyticSolution<D>> solution = selectByType(makeAnalyticSolutionRegistry<D>(), *field, *field);
+        result.velocityAt = [solution](const Vec<D>& x) { return solution->velocity(x, 0.0); };
+    } else {
+        const Vec<D> velocity = region.found("velocity") ? region.getVector<D>("velocity") : Vec<D>::Zero();
+        result.velocityAt = [velocity](const Vec<D>&) { return velocity; };
+    }
     if (type == "box") {
         result.positions = fillBox<D>(region, dx);
         return result;
@@ -117,7 +107,7 @@ FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, con
             return result;
         }
         if (type == "polygon") {
-            const std::vector<Vec<2>> polygon = readPointList(region, "points");
+            const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
             if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
             result.positions = fillShape<2>(dx, domainMin, domainMax, [&](const Vec<2>& x) { return insidePolygon(polygon, x); });
             return result;

@@ -3,6 +3,7 @@
 //   fluid
 //   {
 //       column { type box; min (0 0); max (0.4 0.8); velocity (0 0); }   // 1D, 2D, 3D
+//       vortex { type box; min (0 0); max (1 1); velocity { type taylorGreen; U 1; L 1; nu 0.01; } }
 //       drop   { type ellipse; centre (0 0); semiAxes (1 1); }          // 2D (circle: radius 1;)
 //       wedge  { type polygon; points ((0 0) (1 0) (0 1)); }           // 2D
 //   }
@@ -13,6 +14,7 @@
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace sph {
@@ -20,7 +22,7 @@ namespace sph {
 template <int D>
 struct FluidRegionParticles {
     std::vector<Vec<D>> positions;
-    Vec<D> velocity;
+    std::function<Vec<D>(const Vec<D>&)> velocityAt;
 };
 
 template <int D>
@@ -28,8 +30,5 @@ FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, con
 
 // Number of whole spacings in [lo, hi]; FatalError naming the keyword when it is not whole.
 int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
-
-// A list of 2D points `((x y) (x y) ...)`.
-std::vector<Vec<2>> readPointList(const Dictionary& dict, const std::string& keyword);
 
 }  // namespace sph

@@ -96,7 +96,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
                 continue;
             }
             fluidPositions.push_back(x);
-            fluidVelocities.push_back(filled.velocity);
+            fluidVelocities.push_back(filled.velocityAt(x));
             top = std::max(top, x.dot(up) + 0.5 * dx);
         }
         surfaceHeight.resize(fluidPositions.size(), top);

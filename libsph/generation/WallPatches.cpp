@@ -118,7 +118,7 @@ double sideSign(const Dictionary& patch) {
 }
 
 WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
-    const std::vector<Vec<2>> points = readPointList(patch, "points");
+    const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
     const double sign = sideSign(patch);
     WallPatchParticles<2> walls;
@@ -139,7 +139,7 @@ WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, d
 // A closed polygon with a particle on every vertex (normal along the bisector of its two
 // faces' normals) and equal spacing along each side.
 WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
-    const std::vector<Vec<2>> points = readPointList(patch, "points");
+    const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
     const double sign = sideSign(patch);
     const std::size_t m = points.size();

@@ -515,6 +515,32 @@ template Vec<1> Dictionary::getVector<1>(const std::string&) const;
 template Vec<2> Dictionary::getVector<2>(const std::string&) const;
 template Vec<3> Dictionary::getVector<3>(const std::string&) const;
 
+template <int D>
+std::vector<Vec<D>> Dictionary::getVectorList(const std::string& keyword) const {
+    const Entry& e = entry(keyword);
+    const auto& t = e.tokens();
+    const auto bad = [&]() {
+        fail(keyword, std::string("expected a list of ") + std::to_string(D) + "D points " + (D == 1 ? "((x) ...)" : D == 2 ? "((x y) ...)" : "((x y z) ...)"));
+    };
+    if (e.isDictionary() || t.size() < 2 || t.front().text != "(" || t.back().text != ")") bad();
+    std::vector<Vec<D>> points;
+    std::size_t k = 1;
+    while (k + 1 < t.size()) {
+        if (t[k].text != "(" || k + D + 1 >= t.size() || t[k + D + 1].text != ")") bad();
+        Vec<D> x;
+        for (int d = 0; d < D; ++d) {
+            if (t[k + 1 + d].kind != Token::Kind::Number) bad();
+            x[d] = t[k + 1 + d].number;
+        }
+        points.push_back(x);
+        k += D + 2;
+    }
+    return points;
+}
+template std::vector<Vec<1>> Dictionary::getVectorList<1>(const std::string&) const;
+template std::vector<Vec<2>> Dictionary::getVectorList<2>(const std::string&) const;
+template std::vector<Vec<3>> Dictionary::getVectorList<3>(const std::string&) const;
+
 void Dictionary::fail(const std::string& keyword, const std::string& message) const {
     const Entry* e = lookup(keyword);
     throw FatalError(e ? e->where() : where_, "keyword '" + keyword + "' in dictionary '" + name_ + "': " + message);

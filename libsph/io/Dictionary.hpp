@@ -82,6 +82,8 @@ public:
     double getNonNegativeOrDefault(const std::string& keyword, double fallback) const;
     template <int D>
     Vec<D> getVector(const std::string& keyword) const;
+    template <int D>
+    std::vector<Vec<D>> getVectorList(const std::string& keyword) const;  // ((x y) (x y) ...)
 
     // A FatalError for a value that read correctly but is not acceptable.
     [[noreturn]] void fail(const std::string& keyword, const std::string& message) const;

@@ -1,0 +1,75 @@
+#include "functionObjects/FieldErrorNorm.hpp"
+
+#include "io/SelectByType.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+namespace sph {
+
+template <int D>
+FieldErrorNorm<D>::FieldErrorNorm(const Dictionary& dict, const FunctionObjectContext<D>& context)
+    : field_(dict.get<std::string>("field")), scale_(dict.getPositiveOrDefault("scale", 1.0)), rho0_(context.rho0),
+      subtractMean_(dict.getOrDefault("subtractMean", false)) {
+    const Dictionary& solution = dict.subDict("solution");
+    solutionType_ = solution.get<std::string>("type");
+    solution_ = selectByType(makeAnalyticSolutionRegistry<D>(), solution, solution);
+    if (field_ != "U" && field_ != "p") dict.fail("field", fmt::format("unknown field '{}'; valid fields are: U, p", field_));
+    if (field_ == "p" && !solution_->hasPressure())
+        dict.fail("field", fmt::format("the {} solution has no pressure field; compare U", solutionType_));
+    if (subtractMean_ && field_ != "p") dict.fail("subtractMean", "applies to the field p only");
+    out_ = TimeSeriesFile(context.outputDirectory, "error.dat", fmt::format("# time L1 L2 Linf of {} - {}_exact, divided by {:g}", field_, field_, scale_));
+}
+
+template <int D>
+std::string FieldErrorNorm<D>::describe() const {
+    return fmt::format("errorNorm: {} against the {} solution, scale {:g}", field_, solutionType_, scale_);
+}
+
+template <int D>
+void FieldErrorNorm<D>::accumulate(const FluidSystem<D>& system, double t, ErrorAccumulator& accumulator) const {
+    const auto& x = system.fluid.position;
+    const std::size_t n = system.fluid.ownedCount();
+    if (field_ == "U") {
+        const auto& v = system.fluid.vector("velocity");
+        for (std::size_t i = 0; i < n; ++i) accumulator.add((v[i] - solution_->velocity(x[i], t)).norm());
+        return;
+    }
+    const auto& p = system.fluid.scalar("pressure");
+    const FlowConstants<D> constants{rho0_, system.gravityAt(t)};
+    std::vector<double> exact(n);
+    double meanDifference = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        exact[i] = solution_->pressure(x[i], t, constants);
+        meanDifference += (p[i] - exact[i]) / static_cast<double>(n);
+    }
+    const double shift = subtractMean_ ? meanDifference : 0.0;
+    for (std::size_t i = 0; i < n; ++i) accumulator.add(p[i] - exact[i] - shift);
+}
+
+template <int D>
+ErrorNorms FieldErrorNorm<D>::norms(const FluidSystem<D>& system, double t) const {
+    ErrorAccumulator now;
+    accumulate(system, t, now);
+    return now.norms(scale_);
+}
+
+template <int D>
+void FieldErrorNorm<D>::execute(const FluidSystem<D>& system, double t) {
+    ErrorAccumulator now;
+    accumulate(system, t, now);
+    overRun_.merge(now);
+    const ErrorNorms norms = now.norms(scale_);
+    out_.append(fmt::format("{:.9g} {:.6e} {:.6e} {:.6e}", t, norms.l1, norms.l2, norms.linf));
+}
+
+template <int D>
+std::vector<ReportedError> FieldErrorNorm<D>::errors() const {
+    return {{field_, overRun_.norms(scale_), fmt::format("scale {:g}, particles x times", scale_)}};
+}
+
+template class FieldErrorNorm<1>;
+template class FieldErrorNorm<2>;
+template class FieldErrorNorm<3>;
+
+}  // namespace sph

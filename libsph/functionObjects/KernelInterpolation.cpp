@@ -1,0 +1,58 @@
+#include "functionObjects/KernelInterpolation.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sph {
+
+template <int D>
+InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>& x) {
+    const double* m = system.fluid.scalar("mass").data();
+    const double* rho = system.fluid.scalar("density").data();
+    const double* p = system.fluid.scalar("pressure").data();
+    const Vec<D>* v = system.fluid.vector("velocity").data();
+    InterpolatedFluid<D> result;
+    std::visit(
+        [&](const auto& kernel) {
+            system.fluidCells().forEachNeighbour(x, system.supportRadius(), [&](std::uint32_t j, const Vec<D>&, double r2) {
+                const double w = kernel.value(std::sqrt(r2)) * m[j] / rho[j];
+                result.weight += w;
+                result.pressure += w * p[j];
+                result.density += w * rho[j];
+                result.velocity += w * v[j];
+            });
+        },
+        system.models().kernel);
+    if (result.weight > 0.0) {
+        const double inverse = 1.0 / result.weight;
+        result.pressure *= inverse;
+        result.density *= inverse;
+        result.velocity *= inverse;
+    }
+    return result;
+}
+
+template <int D>
+std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystem<D>& system, const std::string& what) {
+    const std::vector<Vec<D>> points = dict.getVectorList<D>(keyword);
+    if (points.empty()) dict.fail(keyword, "lists no " + what);
+    const Vec<D>& lo = system.domainMin();
+    const Vec<D>& hi = system.domainMax();
+    for (std::size_t k = 0; k < points.size(); ++k)
+        if ((points[k].array() < lo.array()).any() || (points[k].array() > hi.array()).any())
+            dict.fail(keyword, fmt::format("{} {} at ({:g}) lies outside the domain [({:g}), ({:g})]", what, k, fmt::join(points[k], " "),
+                                           fmt::join(lo, " "), fmt::join(hi, " ")));
+    return points;
+}
+
+template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystem<1>&, const Vec<1>&);
+template InterpolatedFluid<2> interpolateFluid<2>(const FluidSystem<2>&, const Vec<2>&);
+template InterpolatedFluid<3> interpolateFluid<3>(const FluidSystem<3>&, const Vec<3>&);
+template std::vector<Vec<1>> readSamplePoints<1>(const Dictionary&, const std::string&, const FluidSystem<1>&, const std::string&);
+template std::vector<Vec<2>> readSamplePoints<2>(const Dictionary&, const std::string&, const FluidSystem<2>&, const std::string&);
+template std::vector<Vec<3>> readSamplePoints<3>(const Dictionary&, const std::string&, const FluidSystem<3>&, const std::string&);
+
+}  // namespace sph

@@ -1,0 +1,82 @@
+#include "functionObjects/Probes.hpp"
+
+#include "functionObjects/KernelInterpolation.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace sph {
+
+namespace {
+
+const std::vector<std::string> probeFields{"p", "rho", "U", "Ux", "Uy", "Uz"};
+
+template <int D>
+double fieldOf(const InterpolatedFluid<D>& sample, const std::string& field) {
+    if (field == "p") return sample.pressure;
+    if (field == "rho") return sample.density;
+    if (field == "U") return sample.velocity.norm();
+    const int component = field == "Ux" ? 0 : field == "Uy" ? 1 : 2;
+    return sample.velocity[component];
+}
+
+}  // namespace
+
+template <int D>
+Probes<D>::Probes(const Dictionary& dict, const FunctionObjectContext<D>& context)
+    : points_(readSamplePoints(dict, "points", context.system, "probe")), fields_(dict.get<std::vector<std::string>>("fields")) {
+    if (fields_.empty()) dict.fail("fields", "lists no field");
+    for (const std::string& field : fields_) {
+        const bool valid = std::find(probeFields.begin(), probeFields.end(), field) != probeFields.end() &&
+                           !(field == "Uz" && D < 3) && !(field == "Uy" && D < 2);
+        if (!valid) dict.fail("fields", fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
+        std::string header = "# time";
+        for (std::size_t k = 0; k < points_.size(); ++k) header += fmt::format(" {}({:g})", field, fmt::join(points_[k], " "));
+        out_.emplace_back(context.outputDirectory, field + ".dat", header);
+    }
+    if (const Dictionary* reference = dict.findSubDict("reference")) {
+        if (fields_.size() != 1) dict.fail("fields", "a probes object with a reference compares one field; list one");
+        std::vector<std::string> quantities;
+        for (std::size_t k = 0; k < points_.size(); ++k) quantities.push_back(fmt::format("{} at probe {}", fields_[0], k));
+        reference_.emplace(*reference, context.caseDirectory, quantities);
+    }
+}
+
+template <int D>
+std::string Probes<D>::describe() const {
+    return fmt::format("probes: {} points, fields {}{}", points_.size(), fmt::join(fields_, " "), reference_ ? ", " + reference_->describe() : "");
+}
+
+template <int D>
+std::vector<std::vector<double>> Probes<D>::sample(const FluidSystem<D>& system) const {
+    std::vector<std::vector<double>> values(fields_.size(), std::vector<double>(points_.size()));
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+        const InterpolatedFluid<D> sampled = interpolateFluid(system, points_[k]);
+        for (std::size_t f = 0; f < fields_.size(); ++f) values[f][k] = fieldOf(sampled, fields_[f]);
+    }
+    return values;
+}
+
+template <int D>
+void Probes<D>::execute(const FluidSystem<D>& system, double t) {
+    const auto values = sample(system);
+    for (std::size_t f = 0; f < fields_.size(); ++f) {
+        std::string line = fmt::format("{:.9g}", t);
+        for (const double value : values[f]) line += fmt::format(" {:.9g}", value);
+        out_[f].append(line);
+    }
+    if (reference_) reference_->compare(t, values[0]);
+}
+
+template <int D>
+std::vector<ReportedError> Probes<D>::errors() const {
+    return errorsOf(reference_);
+}
+
+template class Probes<1>;
+template class Probes<2>;
+template class Probes<3>;
+
+}  // namespace sph

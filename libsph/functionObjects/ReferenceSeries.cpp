@@ -1,0 +1,111 @@
+#include "functionObjects/ReferenceSeries.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+
+namespace sph {
+
+namespace {
+
+std::vector<std::string> splitCsv(const std::string& line) {
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = line.find(',', start);
+        std::string cell = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const auto first = cell.find_first_not_of(" \t\r");
+        const auto last = cell.find_last_not_of(" \t\r");
+        cells.push_back(first == std::string::npos ? std::string() : cell.substr(first, last - first + 1));
+        if (comma == std::string::npos) return cells;
+        start = comma + 1;
+    }
+}
+
+}  // namespace
+
+ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::path& caseDirectory, const std::vector<std::string>& quantities)
+    : file_(caseDirectory / dict.get<std::string>("file")), quantities_(quantities), scale_(dict.getPositiveOrDefault("scale", 1.0)) {
+    const std::string timeColumn = dict.get<std::string>("time");
+    const auto columns = dict.get<std::vector<std::string>>("columns");
+    const double timeScale = dict.getPositiveOrDefault("timeScale", 1.0);
+    const double valueScale = dict.getOrDefault("valueScale", 1.0);
+    if (columns.size() != quantities.size())
+        dict.fail("columns", fmt::format("lists {} columns, but this function object compares {} quantities ({})", columns.size(), quantities.size(),
+                                         fmt::join(quantities, ", ")));
+    std::ifstream in(file_);
+    if (!in) dict.fail("file", fmt::format("cannot read '{}'", file_.string()));
+    const auto where = [&](int line) { return fmt::format("{}:{}", file_.string(), line); };
+    std::string line;
+    int lineNumber = 0;
+    std::vector<std::string> header;
+    std::vector<std::size_t> indices;  // time column first, then the compared columns
+    values_.resize(columns.size());
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        const std::vector<std::string> cells = splitCsv(line);
+        if (header.empty()) {
+            header = cells;
+            std::vector<std::string> wanted{timeColumn};
+            wanted.insert(wanted.end(), columns.begin(), columns.end());
+            for (std::size_t k = 0; k < wanted.size(); ++k) {
+                const auto found = std::find(header.begin(), header.end(), wanted[k]);
+                if (found == header.end())
+                    dict.fail(k == 0 ? "time" : "columns",
+                              fmt::format("'{}' has no column '{}'; its columns are: {}", file_.string(), wanted[k], fmt::join(header, ", ")));
+                indices.push_back(static_cast<std::size_t>(found - header.begin()));
+            }
+            continue;
+        }
+        std::vector<double> row;
+        for (const std::size_t index : indices) {
+            double value = 0.0;
+            const std::string cell = index < cells.size() ? cells[index] : std::string();
+            const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+            if (cell.empty() || error != std::errc() || end != cell.data() + cell.size())
+                throw FatalError(fmt::format("error: {}: column '{}' holds '{}', not a number", where(lineNumber), header[index], cell));
+            row.push_back(value);
+        }
+        const double t = row[0] * timeScale;
+        if (!times_.empty() && !(t > times_.back()))
+            throw FatalError(fmt::format("error: {}: time {:g} does not come after the previous row's {:g}; a reference's time must increase",
+                                         where(lineNumber), row[0], times_.back() / timeScale));
+        times_.push_back(t);
+        for (std::size_t c = 0; c < columns.size(); ++c) values_[c].push_back(row[c + 1] * valueScale);
+    }
+    if (header.empty()) throw FatalError(fmt::format("error: '{}' has no header row", file_.string()));
+    if (times_.size() < 2) throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), times_.size()));
+    accumulators_.resize(columns.size());
+}
+
+std::optional<std::vector<double>> ReferenceSeries::at(double t) const {
+    if (t < times_.front() || t > times_.back()) return std::nullopt;
+    const std::size_t upper = std::max<std::size_t>(1, static_cast<std::size_t>(std::lower_bound(times_.begin(), times_.end(), t) - times_.begin()));
+    const double weight = (t - times_[upper - 1]) / (times_[upper] - times_[upper - 1]);
+    std::vector<double> result;
+    for (const auto& column : values_) result.push_back(column[upper - 1] + weight * (column[upper] - column[upper - 1]));
+    return result;
+}
+
+void ReferenceSeries::compare(double t, const std::vector<double>& simulated) {
+    const auto reference = at(t);
+    if (!reference) return;
+    for (std::size_t c = 0; c < simulated.size(); ++c) accumulators_[c].add(simulated[c] - (*reference)[c]);
+}
+
+std::vector<ReportedError> ReferenceSeries::errors() const {
+    std::vector<ReportedError> result;
+    for (std::size_t c = 0; c < quantities_.size(); ++c)
+        result.push_back({quantities_[c], accumulators_[c].norms(scale_), fmt::format("scale {:g}, {} times", scale_, accumulators_[c].count())});
+    return result;
+}
+
+std::string ReferenceSeries::describe() const {
+    return fmt::format("reference {} ({} rows, t in [{:g}, {:g}] s)", file_.filename().string(), times_.size(), times_.front(), times_.back());
+}
+
+}  // namespace sph

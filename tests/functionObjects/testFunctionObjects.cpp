@@ -1,0 +1,195 @@
+// Function objects on a lattice block with known fields: interpolation at probes, error norms
+// against an analytic field and against a reference time series, gauge heights, and the
+// errors a case can make in them (caught before the first step).
+#include "analytic/TaylorGreen2D.hpp"
+#include "functionObjects/ColumnHeight.hpp"
+#include "functionObjects/FieldErrorNorm.hpp"
+#include "functionObjects/FieldTotals.hpp"
+#include "functionObjects/Probes.hpp"
+#include "functionObjects/ReferenceSeries.hpp"
+#include "physics/FluidSystem.hpp"
+#include "support/CaseFixture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace {
+
+using namespace sph;
+using namespace sph::test;
+
+constexpr double dx = 0.04;
+constexpr int n = 25;  // a 1 x 1 block of fluid in the domain [-0.1, 1.1]^2
+
+std::unique_ptr<FluidSystem<2>> makeBlock() {
+    ParticleSet<2> fluid("fluid");
+    fluid.resize(n * n);
+    fluid.addScalar("density", 1000.0);
+    fluid.addScalar("mass", 1000.0 * dx * dx);
+    fluid.addVector("velocity", Vec<2>::Zero());
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j * n + i);
+            fluid.position[k] = {(i + 0.5) * dx, (j + 0.5) * dx};
+            fluid.globalId[k] = static_cast<std::int64_t>(k);
+        }
+    ParticleSet<2> walls("walls");
+    walls.addScalar("mass", 0.0);
+    FluidModels<2> models{WendlandC2<2>(1.3 * dx), LinearEquationOfState(1000.0, 10.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::vector<Patch<2>>{}, Vec<2>(-0.1, -0.1),
+                                                   Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
+    system->evaluateRates(0.0);  // builds the cell list the interpolation searches
+    return system;
+}
+
+FunctionObjectContext<2> contextFor(const std::filesystem::path& dir, const FluidSystem<2>& system) {
+    return {dir, dir / "postProcessing" / "object" / "0", 1000.0, system};
+}
+
+// The header and first row of a function object's time series.
+std::pair<std::string, std::string> headerAndFirstRow(const std::filesystem::path& file) {
+    std::ifstream written(file);
+    std::string header, row;
+    std::getline(written, header);
+    std::getline(written, row);
+    return {header, row};
+}
+
+std::string errorOf(const std::function<void()>& construct) {
+    try {
+        construct();
+    } catch (const FatalError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST(Probes, InterpolateALinearFieldExactlyAtASymmetricPointAndReadZeroWhenDry) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    auto& p = system->fluid.scalar("pressure");
+    for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 100.0 + 50.0 * system->fluid.position[i].x() + 20.0 * system->fluid.position[i].y();
+    const Dictionary dict = Dictionary::fromString("type probes; fields (p rho Ux); points ((0.5 0.5) (0.3 0.7) (1.09 1.09));", "probes");
+    Probes<2> probes(dict, contextFor(dir, *system));
+    const auto values = probes.sample(*system);
+    // A lattice point of the block: the kernel weights are symmetric, so a linear field is exact.
+    EXPECT_NEAR(values[0][0], 100.0 + 25.0 + 10.0, 1e-9);
+    EXPECT_NEAR(values[0][1], 100.0 + 15.0 + 14.0, 1e-9);
+    EXPECT_NEAR(values[1][0], 1000.0, 1e-9);
+    EXPECT_EQ(values[0][2], 0.0);  // 0.156 from the nearest particle, beyond the support 0.104
+    probes.execute(*system, 0.5);
+    const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/p.dat");
+    EXPECT_EQ(header, "# time p(0.5 0.5) p(0.3 0.7) p(1.09 1.09)");
+    EXPECT_EQ(row, "0.5 135 129 0");
+}
+
+TEST(Probes, OutsideTheDomainOrAnUnknownFieldIsAnErrorBeforeTheRun) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const Dictionary outside = Dictionary::fromString("type probes; fields (p); points ((0.5 0.5) (1.2 0.5));", "probes");
+    EXPECT_NE(errorOf([&] { Probes<2>(outside, contextFor(dir, *system)); }).find("probe 1 at (1.2 0.5) lies outside the domain [(-0.1 -0.1), (1.1 1.1)]"),
+              std::string::npos);
+    const Dictionary unknown = Dictionary::fromString("type probes; fields (T); points ((0.5 0.5));", "probes");
+    EXPECT_NE(errorOf([&] { Probes<2>(unknown, contextFor(dir, *system)); }).find("unknown field 'T'; valid fields in 2D are: p, rho, U, Ux, Uy"),
+              std::string::npos);
+}
+
+TEST(ReferenceSeries, InterpolatesInTimeAndAccumulatesNormsOverTheOverlap) {
+    const auto dir = freshDirectory();
+    writeFile(dir / "ref.csv", "# a comment\nT,other,Z\n0,9,1\n1,9,3\n2,9,3\n");
+    const Dictionary dict = Dictionary::fromString("file \"ref.csv\"; time T; columns (Z); timeScale 0.5; valueScale 2; scale 4;", "reference");
+    ReferenceSeries reference(dict, dir, {"front"});
+    // Times 0, 0.5, 1 s; values 2, 6, 6.
+    EXPECT_DOUBLE_EQ(reference.at(0.25)->at(0), 4.0);
+    EXPECT_DOUBLE_EQ(reference.at(0.75)->at(0), 6.0);
+    EXPECT_FALSE(reference.at(1.5));
+    reference.compare(0.25, {5.0});  // error +1
+    reference.compare(0.75, {3.0});  // error -3
+    reference.compare(2.0, {100.0}); // outside: not compared
+    const auto errors = reference.errors();
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].quantity, "front");
+    EXPECT_DOUBLE_EQ(errors[0].norms.l1, 2.0 / 4.0);
+    EXPECT_DOUBLE_EQ(errors[0].norms.l2, std::sqrt(5.0) / 4.0);
+    EXPECT_DOUBLE_EQ(errors[0].norms.linf, 3.0 / 4.0);
+}
+
+TEST(ReferenceSeries, BadFilesAreErrorsNamingFileLineAndColumn) {
+    const auto dir = freshDirectory();
+    const auto read = [&](const std::string& csv, const std::string& columns = "(Z)") {
+        writeFile(dir / "ref.csv", csv);
+        const Dictionary dict = Dictionary::fromString("file \"ref.csv\"; time t; columns " + columns + ";", "reference");
+        return errorOf([&] { ReferenceSeries(dict, dir, {"front"}); });
+    };
+    EXPECT_NE(read("t,Z\n0,1\n0.2,2\n0.1,3\n").find("ref.csv:4: time 0.1 does not come after the previous row's 0.2"), std::string::npos);
+    EXPECT_NE(read("t,Y\n0,1\n1,2\n").find("has no column 'Z'; its columns are: t, Y"), std::string::npos);
+    EXPECT_NE(read("t,Z\n0,1\n1,abc\n").find("ref.csv:3: column 'Z' holds 'abc', not a number"), std::string::npos);
+    EXPECT_NE(read("t,Z\n0,1\n").find("has 1 rows of numbers; a reference needs at least 2"), std::string::npos);
+    EXPECT_NE(read("t,Z\n0,1\n1,2\n", "(Z Z)").find("lists 2 columns, but this function object compares 1 quantities"), std::string::npos);
+    const Dictionary missing = Dictionary::fromString("file \"none.csv\"; time t; columns (Z);", "reference");
+    EXPECT_NE(errorOf([&] { ReferenceSeries(missing, dir, {"front"}); }).find("cannot read"), std::string::npos);
+}
+
+TEST(FieldErrorNorm, NormsOfAKnownPerturbationOfTheExactField) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const Dictionary dict =
+        Dictionary::fromString("type errorNorm; field U; scale 2; solution { type taylorGreen; U 1; L 1; nu 0.01; }", "velocityError");
+    FieldErrorNorm<2> error(dict, contextFor(dir, *system));
+    const double t = 0.3;
+    auto& v = system->fluid.vector("velocity");
+    const TaylorGreen2D<2> exact(dict.subDict("solution"));
+    for (std::size_t i = 0; i < system->fluid.size(); ++i) v[i] = exact.velocity(system->fluid.position[i], t);
+    v[17].x() += 0.1;  // one particle off by 0.1
+    const double count = n * n;
+    const ErrorNorms norms = error.norms(*system, t);
+    EXPECT_NEAR(norms.l1, 0.1 / count / 2.0, 1e-12);
+    EXPECT_NEAR(norms.l2, std::sqrt(0.01 / count) / 2.0, 1e-12);
+    EXPECT_NEAR(norms.linf, 0.1 / 2.0, 1e-12);
+    // Over the run: the same at two executions gives the same space-time norms.
+    error.execute(*system, t);
+    error.execute(*system, t);
+    EXPECT_NEAR(error.errors().at(0).norms.l2, norms.l2, 1e-12);
+}
+
+TEST(FieldErrorNorm, PressureUpToAConstantAndASolutionWithoutPressure) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const Dictionary dict =
+        Dictionary::fromString("type errorNorm; field p; subtractMean yes; solution { type hydrostatic; freeSurfaceHeight 1; }", "pressureError");
+    FieldErrorNorm<2> error(dict, contextFor(dir, *system));
+    auto& p = system->fluid.scalar("pressure");
+    for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 1234.0 + 1000.0 * 9.81 * (1.0 - system->fluid.position[i].y());
+    EXPECT_NEAR(error.norms(*system, 1.0).linf, 0.0, 1e-9);
+    const Dictionary noPressure = Dictionary::fromString("type errorNorm; field p; solution { type couette; V0 1; L 1; nu 1; }", "pressureError");
+    EXPECT_NE(errorOf([&] { FieldErrorNorm<2>(noPressure, contextFor(dir, *system)); }).find("the couette solution has no pressure field"),
+              std::string::npos);
+}
+
+TEST(ColumnHeight, GaugesReadTheBlockHeightAboveThemAndZeroWhenDry) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const Dictionary dict = Dictionary::fromString("type columnHeight; points ((0.5 0) (0.5 0.2) (1.05 0));", "gauges");
+    ColumnHeight<2> gauges(dict, contextFor(dir, *system));
+    const std::vector<double> h = gauges.heights(*system);
+    EXPECT_NEAR(h[0], 1.0, 1e-12);  // the top particle at 0.98 plus half a spacing
+    EXPECT_NEAR(h[1], 0.8, 1e-12);
+    EXPECT_EQ(h[2], 0.0);  // 0.07 from the nearest column, beyond the radius h = 0.052
+}
+
+TEST(FieldTotals, MassEnergyAndMomentumOfTheBlock) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    for (auto& v : system->fluid.vector("velocity")) v = Vec<2>(2.0, 0.0);
+    FieldTotals<2> totals(Dictionary::fromString("type fieldTotals;", "totals"), contextFor(dir, *system));
+    totals.execute(*system, 0.0);
+    const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/totals.dat");
+    EXPECT_EQ(header, "# time mass kineticEnergy momentum_x momentum_y");
+    // Mass 1000 kg (1 m^2 at rho0 1000), energy 1000 * 4 / 2, momentum 2000.
+    EXPECT_EQ(row, "0 1000 2000 2000 0");
+}
