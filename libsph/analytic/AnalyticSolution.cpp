@@ -30,7 +30,7 @@ AnalyticSolutionRegistry<D> makeAnalyticSolutionRegistry() {
                                      {{"U", "", "velocity scale"}, {"L", "", "side of the square"}, {"nu", "", "kinematic viscosity"}}},
                      [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<TaylorGreen2D<D>>(dict); });
         registry.add("ellipticalDrop", {"free drop stretched by u = -A x, v = A y (ODE)", "Monaghan, J. Comput. Phys. 110 (1994) 399",
-                                        {{"A0", "", "initial rate A(0)"}, {"centre", "(0 0)", "centre of the drop"}}},
+                                        {{"A0", "", "initial rate A(0)"}, {"R0", "", "initial radius"}, {"centre", "(0 0)", "centre of the drop"}}},
                      [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> {
                          return std::make_unique<EllipticalDropMonaghan1994<D>>(dict);
                      });

@@ -7,7 +7,7 @@ namespace sph {
 
 template <int D>
 EllipticalDropMonaghan1994<D>::EllipticalDropMonaghan1994(const Dictionary& dict)
-    : centre_(dict.found("centre") ? dict.getVector<D>("centre") : Vec<D>::Zero()), initialRate_(dict.getPositive("A0")),
+    : centre_(dict.found("centre") ? dict.getVector<D>("centre") : Vec<D>::Zero()), initialRate_(dict.getPositive("A0")), radius_(dict.getPositive("R0")),
       cached_{initialRate_, 1.0} {}
 
 template <int D>
@@ -39,6 +39,16 @@ template <int D>
 Vec<D> EllipticalDropMonaghan1994<D>::velocity(const Vec<D>& x, double t) const {
     const double rate = at(t).rate;
     return Vec<D>(-rate * (x[0] - centre_[0]), rate * (x[1] - centre_[1]));
+}
+
+template <int D>
+double EllipticalDropMonaghan1994<D>::pressure(const Vec<D>& x, double t, const FlowConstants<D>& constants) const {
+    const State s = at(t);
+    const double a2 = s.ratio * s.ratio, a4 = a2 * a2;
+    const double rateOfRate = s.rate * s.rate * (a4 - 1.0) / (a4 + 1.0);
+    const double centre = 0.5 * constants.rho0 * a2 * radius_ * radius_ * (s.rate * s.rate - rateOfRate);
+    const Vec<D> r = x - centre_;
+    return centre * (1.0 - r[0] * r[0] / (a2 * radius_ * radius_) - r[1] * r[1] * a2 / (radius_ * radius_));
 }
 
 template class EllipticalDropMonaghan1994<2>;

@@ -1,5 +1,6 @@
 #include "driver/ModelCatalogue.hpp"
 
+#include "analytic/AnalyticSolution.hpp"
 #include "boundaryModels/BoundaryModel.hpp"
 #include "densityDiffusion/DensityDiffusion.hpp"
 #include "equationsOfState/EquationOfState.hpp"
@@ -42,6 +43,7 @@ std::string modelCatalogue() {
     text += listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }");
     text += listFamily(makeTimeIntegratorRegistry<2>(), "system/timeIntegration, integrator { type ...; }");
     text += listFamily(makeFunctionObjectRegistry<2>(), "system/controlDict, functions { <name> { type ...; } }");
+    text += listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");
     return text;
 }
 

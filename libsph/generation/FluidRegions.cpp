@@ -1,6 +1,5 @@
 #include "generation/FluidRegions.hpp"
 
-#include "analytic/AnalyticSolution.hpp"
 #include "io/SelectByType.hpp"
 
 #include <fmt/format.h>
@@ -86,13 +85,10 @@ template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax) {
     const std::string type = region.get<std::string>("type");
     FluidRegionParticles<D> result;
-    if (const Dictionary* field = region.findSubDict("velocity")) {
-        std::shared_ptr<const AnalyticSolution<D>> solution = selectByType(makeAnalyticSolutionRegistry<D>(), *field, *field);
-        result.velocityAt = [solution](const Vec<D>& x) { return solution->velocity(x, 0.0); };
-    } else {
-        const Vec<D> velocity = region.found("velocity") ? region.getVector<D>("velocity") : Vec<D>::Zero();
-        result.velocityAt = [velocity](const Vec<D>&) { return velocity; };
-    }
+    if (const Dictionary* field = region.findSubDict("velocity"))
+        result.initialField = selectByType(makeAnalyticSolutionRegistry<D>(), *field, *field);
+    else if (region.found("velocity"))
+        result.velocity = region.getVector<D>("velocity");
     if (type == "box") {
         result.positions = fillBox<D>(region, dx);
         return result;

@@ -11,10 +11,11 @@
 // (anchored at the domain's min corner) that fall inside them.
 #pragma once
 
+#include "analytic/AnalyticSolution.hpp"
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
-#include <functional>
+#include <memory>
 #include <vector>
 
 namespace sph {
@@ -22,7 +23,8 @@ namespace sph {
 template <int D>
 struct FluidRegionParticles {
     std::vector<Vec<D>> positions;
-    std::function<Vec<D>(const Vec<D>&)> velocityAt;
+    Vec<D> velocity = Vec<D>::Zero();                          // a constant velocity, or
+    std::shared_ptr<const AnalyticSolution<D>> initialField;  // the velocity (and pressure) of a solution at t = 0
 };
 
 template <int D>

@@ -40,8 +40,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         }
     }
     const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
-    if (initialPressure != "none" && initialPressure != "hydrostatic")
-        dict.fail("initialPressure", "expected none or hydrostatic, found '" + initialPressure + "'");
+    if (initialPressure != "none" && initialPressure != "hydrostatic" && initialPressure != "analytic")
+        dict.fail("initialPressure", "expected none, hydrostatic or analytic, found '" + initialPressure + "'");
 
     const Dictionary fluidPropertiesDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
     const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
@@ -75,7 +75,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
 
     // Fluid regions.
     std::vector<Vec<D>> fluidPositions, fluidVelocities;
-    std::vector<double> surfaceHeight;  // per particle: the top of its region along -g
+    std::vector<double> surfaceHeight;    // per particle: the top of its region along -g
+    std::vector<double> initialPressures;  // per particle, with initialPressure analytic
     const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
     std::size_t dropped = 0;
     const Dictionary& fluid = dict.subDict("fluid");
@@ -96,16 +97,25 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
                 continue;
             }
             fluidPositions.push_back(x);
-            fluidVelocities.push_back(filled.velocityAt(x));
+            fluidVelocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
+            if (initialPressure == "analytic") {
+                if (!filled.initialField || !filled.initialField->hasPressure())
+                    dict.fail("initialPressure", fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
+                                                             "field (velocity {{ type taylorGreen; ... }}, say)", name));
+                initialPressures.push_back(filled.initialField->pressure(x, 0.0, {rho0, properties.gravity}));
+            }
             top = std::max(top, x.dot(up) + 0.5 * dx);
         }
         surfaceHeight.resize(fluidPositions.size(), top);
         if (fluidPositions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
     }
 
-    const auto densityAt = [&](const Vec<D>& x, double top) {
-        if (initialPressure != "hydrostatic") return rho0;
-        return std::visit([&](const auto& eos) { return eos.density(eos.p0 + rho0 * properties.gravity.norm() * (top - x.dot(up))); }, properties.eos);
+    const auto densityFor = [&](double p) { return std::visit([&](const auto& eos) { return eos.density(eos.p0 + p); }, properties.eos); };
+    const auto hydrostaticPressure = [&](const Vec<D>& x, double top) { return rho0 * properties.gravity.norm() * (top - x.dot(up)); };
+    const auto fluidDensity = [&](std::size_t i) {
+        if (initialPressure == "analytic") return densityFor(initialPressures[i]);
+        if (initialPressure == "hydrostatic") return densityFor(hydrostaticPressure(fluidPositions[i], surfaceHeight[i]));
+        return rho0;
     };
 
     ParticleSet<D> fluidSet("fluid");
@@ -117,7 +127,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         fluidSet.position[i] = fluidPositions[i];
         fluidSet.globalId[i] = static_cast<std::int64_t>(i);
         velocity[i] = fluidVelocities[i];
-        density[i] = densityAt(fluidPositions[i], surfaceHeight[i]);
+        density[i] = fluidDensity(i);
     }
 
     walls.resize(allWalls.positions.size());
@@ -135,7 +145,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         spacing[k] = allWalls.spacings[k];
         patch[k] = patchOf[k];
         layer[k] = allWalls.layers[k];
-        wallDensity[k] = std::max(rho0, densityAt(allWalls.positions[k], highestSurface));
+        wallDensity[k] = initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;
     }
 
     StateHeader header;

@@ -5,11 +5,12 @@
 //   spacing    0.01;                              // dx
 //   domain     { min (-0.1 -0.1); max (1.7 1.0); } // every particle must lie inside
 //   initialPressure hydrostatic;                  // or none (default): p = rho0 |g| (H - z),
-//                                                 // H the top of each fluid region
+//                                                 // H the top of each fluid region; or analytic:
+//                                                 // the pressure of each region's velocity solution
 //   fluid      { <name> { type box; ... } ... }    // see FluidRegions.hpp
 //   boundaries { <patch> { type boxWalls; ... } ... }  // see WallPatches.hpp
 // Fluid particles closer than dx/2 to a wall particle, or inside an obstacle, are dropped.
-// Mass is rho0 dx^D.
+// Mass is rho0 dx^D; the density follows the initial pressure through the equation of state.
 #pragma once
 
 #include <filesystem>

@@ -62,7 +62,7 @@ TEST(AnalyticSolutions, TaylorGreenDecaysAtItsRateAndIsDivergenceFree) {
 }
 
 TEST(AnalyticSolutions, EllipticalDropFollowsTheOde) {
-    const auto drop = solution("type ellipticalDrop; A0 100; centre (1 2);");
+    const auto drop = solution("type ellipticalDrop; A0 100; R0 1; centre (1 2);");
     const auto& ode = dynamic_cast<const EllipticalDropMonaghan1994<2>&>(*drop);
     // elliptical_drop_monaghan1994_analytic.csv: t = 0.001 and 0.008 (a = a_minor, A).
     EXPECT_NEAR(ode.at(0.001).ratio, 0.905135812, 1e-8);
@@ -75,6 +75,12 @@ TEST(AnalyticSolutions, EllipticalDropFollowsTheOde) {
     const Vec<2> u = drop->velocity(Vec<2>(1.5, 2.25), 0.0);
     EXPECT_DOUBLE_EQ(u.x(), -50.0);
     EXPECT_DOUBLE_EQ(u.y(), 25.0);
+    // Centre pressure (p_centre, rho 1) at t = 0 and 0.008; zero on the ellipse (semi-axes a, 1/a).
+    const FlowConstants<2> unit{1.0, Vec<2>::Zero()};
+    EXPECT_NEAR(drop->pressure(Vec<2>(1, 2), 0.0, unit), 5000.0, 1e-9);
+    EXPECT_NEAR(drop->pressure(Vec<2>(1, 2), 0.008, unit), 1108.63138, 1e-4);
+    const double a = ode.at(0.008).ratio;
+    EXPECT_NEAR(drop->pressure(Vec<2>(1 + a * std::cos(0.3), 2 + std::sin(0.3) / a), 0.008, unit), 0.0, 1e-9);
 }
 
 TEST(AnalyticSolutions, HydrostaticFollowsGravity) {

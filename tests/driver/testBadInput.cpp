@@ -291,3 +291,39 @@ TEST(BadInput, EulerEveryMustBePositive) {
     replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type verlet; eulerEvery 0;");
     expectContains(failureOf(dir), "keyword 'eulerEvery' in dictionary 'timeIntegration/integrator': must be at least 1, found 0");
 }
+
+TEST(BadInput, AnalyticInitialPressureNeedsASolutionWithPressure) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "initialPressure hydrostatic;", "initialPressure analytic;");
+    expectContains(failureOf(dir), "keyword 'initialPressure' in dictionary 'generateParticlesDict': 'analytic' needs fluid region 'column' to take "
+                                   "its velocity from a solution with a pressure field");
+    const auto couette = copyCase("couette2D", "couette");
+    replaceInFile(couette / "system/generateParticlesDict", "water   { type box; min (0 0); max (5e-4 1e-3); }",
+                  "water   { type box; min (0 0); max (5e-4 1e-3); velocity { type couette; V0 1; L 1e-3; nu 1e-6; } }");
+    replaceInFile(couette / "system/generateParticlesDict", "dimension   2;", "dimension   2;\ninitialPressure analytic;");
+    expectContains(failureOf(couette), "'analytic' needs fluid region 'water' to take its velocity from a solution with a pressure field");
+}
+
+TEST(BadInput, UnknownAnalyticSolutionListsTheValidNames) {
+    const auto dir = copyCase("taylorGreen2D");
+    replaceInFile(dir / "system/controlDict", "solution        { type taylorGreen;", "solution        { type taylorGren;");
+    const std::string message = failureOf(dir);
+    expectContains(message, (dir / "system/controlDict").string() + ":");
+    expectContains(message, "unknown analytic solution 'taylorGren'; valid analytic solution names are:\n    couette\n    ellipticalDrop\n    hydrostatic");
+}
+
+TEST(BadInput, ProbeOutsideTheDomainStopsBeforeTheFirstStep) {
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/controlDict", "functions\n{", "functions\n{\n    p { type probes; fields (p); points ((0.1 0.01) (0.5 0.01)); }");
+    expectContains(failureOf(dir), "keyword 'points' in dictionary 'controlDict/functions/p': probe 1 at (0.5 0.01) lies outside the domain "
+                                   "[(-0.03 -0.03), (0.43 0.2)]");
+    EXPECT_FALSE(std::filesystem::exists(dir / "0.01")) << "a step was taken";
+}
+
+TEST(BadInput, ReferenceWithDecreasingTimeStopsBeforeTheFirstStep) {
+    const auto dir = copyCase("damBreak2D");
+    writeFile(dir / "martinMoyce1952Front.csv", "T,Z\n0.41,1.11\n0.84,1.22\n0.80,1.44\n");
+    expectContains(failureOf(dir), (dir / "martinMoyce1952Front.csv").string() + ":4: time 0.8 does not come after the previous row's 0.84");
+    writeFile(dir / "martinMoyce1952Front.csv", "T,X\n0.41,1.11\n0.84,1.22\n");
+    expectContains(failureOf(dir), "has no column 'Z'; its columns are: T, X");
+}

@@ -27,11 +27,13 @@ inline void writeFile(const std::filesystem::path& file, const std::string& text
     std::ofstream(file) << text;
 }
 
-// Copies a shipped case's dictionaries (system/, constant/) into a fresh directory.
+// Copies a shipped case's dictionaries (system/, constant/) and reference data (*.csv) into a fresh directory.
 inline std::filesystem::path copyCase(const std::string& name, const std::string& variant = "") {
     const std::filesystem::path dir = freshDirectory(variant);
-    for (const char* part : {"system", "constant"})
-        std::filesystem::copy(sourceDirectory() / "cases" / name / part, dir / part, std::filesystem::copy_options::recursive);
+    const std::filesystem::path source = sourceDirectory() / "cases" / name;
+    for (const char* part : {"system", "constant"}) std::filesystem::copy(source / part, dir / part, std::filesystem::copy_options::recursive);
+    for (const auto& file : std::filesystem::directory_iterator(source))
+        if (file.is_regular_file() && file.path().extension() == ".csv") std::filesystem::copy(file.path(), dir);
     return dir;
 }
 
