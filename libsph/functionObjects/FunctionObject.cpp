@@ -39,6 +39,7 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                          {"end", "", "last point"},
                          {"points", "", "number of samples (>= 2)"},
                          {"hydrostaticReference", "none", "{ freeSurfaceHeight H; }: error against rho0 |g| (H - z)"},
+                         {"reference", "none", "{ file; coordinate; axis; field; columns (...); scale; }: error against a CSV profile"},
                          interval}});
     add<BodyMotion<D>>(registry, "bodyMotion",
                        {"position, angle, velocities and fluid loads of a free body (2D)", "", {{"patch", "", "the body's patch"}, interval}});

@@ -48,11 +48,32 @@ std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& 
     return points;
 }
 
+template <int D>
+double fieldValue(const InterpolatedFluid<D>& sample, const std::string& field) {
+    if (field == "p") return sample.pressure;
+    if (field == "rho") return sample.density;
+    if (field == "U") return sample.velocity.norm();
+    return sample.velocity[field == "Ux" ? 0 : field == "Uy" ? 1 : 2];
+}
+
+template <int D>
+void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, const std::string& field) {
+    const bool valid = field == "p" || field == "rho" || field == "U" || field == "Ux" || (field == "Uy" && D >= 2) || (field == "Uz" && D >= 3);
+    if (!valid)
+        dict.fail(keyword, fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
+}
+
 template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystem<1>&, const Vec<1>&);
 template InterpolatedFluid<2> interpolateFluid<2>(const FluidSystem<2>&, const Vec<2>&);
 template InterpolatedFluid<3> interpolateFluid<3>(const FluidSystem<3>&, const Vec<3>&);
+template double fieldValue<1>(const InterpolatedFluid<1>&, const std::string&);
+template void checkInterpolatedField<1>(const Dictionary&, const std::string&, const std::string&);
 template std::vector<Vec<1>> readSamplePoints<1>(const Dictionary&, const std::string&, const FluidSystem<1>&, const std::string&);
+template double fieldValue<2>(const InterpolatedFluid<2>&, const std::string&);
+template void checkInterpolatedField<2>(const Dictionary&, const std::string&, const std::string&);
 template std::vector<Vec<2>> readSamplePoints<2>(const Dictionary&, const std::string&, const FluidSystem<2>&, const std::string&);
+template double fieldValue<3>(const InterpolatedFluid<3>&, const std::string&);
+template void checkInterpolatedField<3>(const Dictionary&, const std::string&, const std::string&);
 template std::vector<Vec<3>> readSamplePoints<3>(const Dictionary&, const std::string&, const FluidSystem<3>&, const std::string&);
 
 }  // namespace sph

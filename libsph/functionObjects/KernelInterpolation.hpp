@@ -25,6 +25,13 @@ struct InterpolatedFluid {
 template <int D>
 InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>& x);
 
+// One field of an interpolated sample by name: p, rho, U (magnitude), Ux, Uy, Uz.
+template <int D>
+double fieldValue(const InterpolatedFluid<D>& sample, const std::string& field);
+// An error naming `keyword` when `field` is not one of the names fieldValue takes in D dimensions.
+template <int D>
+void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, const std::string& field);
+
 // Reads the sample points of `keyword`; a point outside the domain is an error naming it (`what`: "probe", "gauge").
 template <int D>
 std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystem<D>& system, const std::string& what);

@@ -18,14 +18,23 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
     if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) freeSurfaceHeight_ = reference->get<double>("freeSurfaceHeight");
     std::filesystem::create_directories(directory_);
+    if (const Dictionary* reference = dict.findSubDict("reference")) {
+        profileField_ = reference->get<std::string>("field");
+        checkInterpolatedField<D>(*reference, "field", profileField_);
+        const std::string axis = reference->get<std::string>("axis");
+        profileAxis_ = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : D;
+        if (profileAxis_ >= D) reference->fail("axis", fmt::format("expected one of x{}{} for a {}D case, found '{}'", D > 1 ? ", y" : "", D > 2 ? ", z" : "", D, axis));
+        profile_.emplace(*reference, context.caseDirectory, std::vector<std::string>{profileField_ + " profile"}, ReferenceSeries::Along::Coordinate);
+    }
     if (freeSurfaceHeight_)
         errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>
 std::string LineSample<D>::describe() const {
-    return fmt::format("lineSample: start ({:g}), end ({:g}), points {}{}", fmt::join(start_, " "), fmt::join(end_, " "), points_,
-                       freeSurfaceHeight_ ? fmt::format(", hydrostatic reference H = {:g}", *freeSurfaceHeight_) : "");
+    return fmt::format("lineSample: start ({:g}), end ({:g}), points {}{}{}", fmt::join(start_, " "), fmt::join(end_, " "), points_,
+                       freeSurfaceHeight_ ? fmt::format(", hydrostatic reference H = {:g}", *freeSurfaceHeight_) : "",
+                       profile_ ? ", " + profileField_ + " against " + profile_->describe() : "");
 }
 
 template <int D>
@@ -59,6 +68,12 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
         }
         csv += "\n";
     }
+    if (profile_) {
+        profile_->clear();
+        for (const Sample& s : samples)
+            profile_->compare(s.position[profileAxis_], {fieldValue(InterpolatedFluid<D>{s.pressure, s.density, s.velocity, 0.0}, profileField_)});
+        time_ = t;
+    }
     const auto timeDirectory = directory_ / timeName(t);
     std::filesystem::create_directories(timeDirectory);
     writeTextAtomically(timeDirectory / "line.csv", csv);
@@ -72,8 +87,13 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
 
 template <int D>
 std::vector<ReportedError> LineSample<D>::errors() const {
-    if (!freeSurfaceHeight_) return {};
-    return {{"hydrostatic p", last_, fmt::format("rho0 |g| H, {} samples at t = {:g}", points_, time_)}};
+    std::vector<ReportedError> errors;
+    if (freeSurfaceHeight_) errors.push_back({"hydrostatic p", last_, fmt::format("rho0 |g| H, {} samples at t = {:g}", points_, time_)});
+    for (ReportedError error : errorsOf(profile_)) {
+        error.normalisation += fmt::format(" at t = {:g}", time_);
+        errors.push_back(error);
+    }
+    return errors;
 }
 
 template class LineSample<1>;

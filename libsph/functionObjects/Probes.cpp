@@ -5,33 +5,15 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 
 namespace sph {
-
-namespace {
-
-const std::vector<std::string> probeFields{"p", "rho", "U", "Ux", "Uy", "Uz"};
-
-template <int D>
-double fieldOf(const InterpolatedFluid<D>& sample, const std::string& field) {
-    if (field == "p") return sample.pressure;
-    if (field == "rho") return sample.density;
-    if (field == "U") return sample.velocity.norm();
-    const int component = field == "Ux" ? 0 : field == "Uy" ? 1 : 2;
-    return sample.velocity[component];
-}
-
-}  // namespace
 
 template <int D>
 Probes<D>::Probes(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : points_(readSamplePoints(dict, "points", context.system, "probe")), fields_(dict.get<std::vector<std::string>>("fields")) {
     if (fields_.empty()) dict.fail("fields", "lists no field");
     for (const std::string& field : fields_) {
-        const bool valid = std::find(probeFields.begin(), probeFields.end(), field) != probeFields.end() &&
-                           !(field == "Uz" && D < 3) && !(field == "Uy" && D < 2);
-        if (!valid) dict.fail("fields", fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
+        checkInterpolatedField<D>(dict, "fields", field);
         std::string header = "# time";
         for (std::size_t k = 0; k < points_.size(); ++k) header += fmt::format(" {}({:g})", field, fmt::join(points_[k], " "));
         out_.emplace_back(context.outputDirectory, field + ".dat", header);
@@ -54,7 +36,7 @@ std::vector<std::vector<double>> Probes<D>::sample(const FluidSystem<D>& system)
     std::vector<std::vector<double>> values(fields_.size(), std::vector<double>(points_.size()));
     for (std::size_t k = 0; k < points_.size(); ++k) {
         const InterpolatedFluid<D> sampled = interpolateFluid(system, points_[k]);
-        for (std::size_t f = 0; f < fields_.size(); ++f) values[f][k] = fieldOf(sampled, fields_[f]);
+        for (std::size_t f = 0; f < fields_.size(); ++f) values[f][k] = fieldValue(sampled, fields_[f]);
     }
     return values;
 }

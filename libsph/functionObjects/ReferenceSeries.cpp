@@ -26,11 +26,13 @@ std::vector<std::string> splitCsv(const std::string& line) {
 
 }  // namespace
 
-ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::path& caseDirectory, const std::vector<std::string>& quantities)
-    : file_(caseDirectory / dict.get<std::string>("file")), quantities_(quantities), scale_(dict.getPositiveOrDefault("scale", 1.0)) {
-    const std::string timeColumn = dict.get<std::string>("time");
+ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::path& caseDirectory, const std::vector<std::string>& quantities,
+                                 Along along)
+    : file_(caseDirectory / dict.get<std::string>("file")), quantities_(quantities), along_(along), scale_(dict.getPositiveOrDefault("scale", 1.0)) {
+    const std::string abscissa = along == Along::Time ? "time" : "coordinate";
+    const std::string timeColumn = dict.get<std::string>(abscissa);
     const auto columns = dict.get<std::vector<std::string>>("columns");
-    const double timeScale = dict.getPositiveOrDefault("timeScale", 1.0);
+    const double timeScale = dict.getPositiveOrDefault(abscissa + "Scale", 1.0);
     const double valueScale = dict.getOrDefault("valueScale", 1.0);
     if (columns.size() != quantities.size())
         dict.fail("columns", fmt::format("lists {} columns, but this function object compares {} quantities ({})", columns.size(), quantities.size(),
@@ -55,7 +57,7 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
             for (std::size_t k = 0; k < wanted.size(); ++k) {
                 const auto found = std::find(header.begin(), header.end(), wanted[k]);
                 if (found == header.end())
-                    dict.fail(k == 0 ? "time" : "columns",
+                    dict.fail(k == 0 ? abscissa : "columns",
                               fmt::format("'{}' has no column '{}'; its columns are: {}", file_.string(), wanted[k], fmt::join(header, ", ")));
                 indices.push_back(static_cast<std::size_t>(found - header.begin()));
             }
@@ -71,14 +73,21 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
             row.push_back(value);
         }
         const double t = row[0] * timeScale;
-        if (!times_.empty() && !(t > times_.back()))
-            throw FatalError(fmt::format("error: {}: time {:g} does not come after the previous row's {:g}; a reference's time must increase",
-                                         where(lineNumber), row[0], times_.back() / timeScale));
+        // Time increases; a coordinate runs either way, the direction its first two rows take.
+        const bool decreasing = along == Along::Coordinate && !times_.empty() && (times_.size() >= 2 ? times_[1] < times_[0] : t < times_[0]);
+        if (!times_.empty() && !(decreasing ? t < times_.back() : t > times_.back()))
+            throw FatalError(fmt::format("error: {}: {} {:g} does not come {} the previous row's {:g}; a reference's {} must {}", where(lineNumber), abscissa,
+                                         row[0], decreasing ? "before" : "after", times_.back() / timeScale, abscissa,
+                                         along == Along::Time ? "increase" : "increase or decrease throughout"));
         times_.push_back(t);
         for (std::size_t c = 0; c < columns.size(); ++c) values_[c].push_back(row[c + 1] * valueScale);
     }
     if (header.empty()) throw FatalError(fmt::format("error: '{}' has no header row", file_.string()));
     if (times_.size() < 2) throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), times_.size()));
+    if (times_.back() < times_.front()) {
+        std::reverse(times_.begin(), times_.end());
+        for (auto& column : values_) std::reverse(column.begin(), column.end());
+    }
     accumulators_.resize(columns.size());
 }
 
@@ -97,15 +106,21 @@ void ReferenceSeries::compare(double t, const std::vector<double>& simulated) {
     for (std::size_t c = 0; c < simulated.size(); ++c) accumulators_[c].add(simulated[c] - (*reference)[c]);
 }
 
+void ReferenceSeries::clear() {
+    for (auto& accumulator : accumulators_) accumulator = ErrorAccumulator();
+}
+
 std::vector<ReportedError> ReferenceSeries::errors() const {
     std::vector<ReportedError> result;
     for (std::size_t c = 0; c < quantities_.size(); ++c)
-        result.push_back({quantities_[c], accumulators_[c].norms(scale_), fmt::format("scale {:g}, {} times", scale_, accumulators_[c].count())});
+        result.push_back({quantities_[c], accumulators_[c].norms(scale_),
+                          fmt::format("scale {:g}, {} {}", scale_, accumulators_[c].count(), along_ == Along::Time ? "times" : "points")});
     return result;
 }
 
 std::string ReferenceSeries::describe() const {
-    return fmt::format("reference {} ({} rows, t in [{:g}, {:g}] s)", file_.filename().string(), times_.size(), times_.front(), times_.back());
+    return fmt::format("reference {} ({} rows, {} in [{:g}, {:g}])", file_.filename().string(), times_.size(), along_ == Along::Time ? "t" : "coordinate",
+                       times_.front(), times_.back());
 }
 
 }  // namespace sph

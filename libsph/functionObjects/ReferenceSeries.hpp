@@ -13,6 +13,8 @@
 //   }
 // A missing file or column, a cell that is not a number, or a time that does not increase is
 // an error naming the file, line and column, before the first step.
+// A reference profile (along a line, Along::Coordinate) reads `coordinate` and
+// `coordinateScale` instead of `time` and `timeScale`; its coordinate may increase or decrease.
 #pragma once
 
 #include "functionObjects/ErrorNorms.hpp"
@@ -29,19 +31,23 @@ class ReferenceSeries {
 public:
     // `quantities` names what is compared, one per column (for the error summary); their count
     // must match the columns' count.
-    ReferenceSeries(const Dictionary& dict, const std::filesystem::path& caseDirectory, const std::vector<std::string>& quantities);
+    enum class Along { Time, Coordinate };
+    ReferenceSeries(const Dictionary& dict, const std::filesystem::path& caseDirectory, const std::vector<std::string>& quantities,
+                    Along along = Along::Time);
 
-    // The reference values at time t, scaled; none outside the file's time range.
+    // The reference values at time (or coordinate) t, scaled; none outside the file's range.
     std::optional<std::vector<double>> at(double t) const;
     // Compares `simulated` (one value per column) with the reference at t.
     void compare(double t, const std::vector<double>& simulated);
+    void clear();  // forgets what was compared (a profile compares the latest execution only)
     std::vector<ReportedError> errors() const;
     std::string describe() const;
 
 private:
     std::filesystem::path file_;
     std::vector<std::string> quantities_;
-    std::vector<double> times_;
+    Along along_;
+    std::vector<double> times_;  // or coordinates, increasing
     std::vector<std::vector<double>> values_;  // [column][row]
     double scale_;
     std::vector<ErrorAccumulator> accumulators_;

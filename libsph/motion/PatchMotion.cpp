@@ -5,6 +5,7 @@
 #include "motion/MotionTable.hpp"
 #include "motion/Oscillation.hpp"
 #include "motion/Rotation.hpp"
+#include "motion/SlidingSurface.hpp"
 #include "motion/Translation.hpp"
 
 namespace sph {
@@ -15,6 +16,8 @@ PatchMotionRegistry<D> makePatchMotionRegistry() {
     PatchMotionRegistry<D> registry("motion");
     registry.add("translation", {"rigid, constant velocity", "", {{"velocity", "", "U"}}},
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<Translation<D>>(dict); });
+    registry.add("slidingSurface", {"the surface slides along itself: particles stay, carry U (a driven lid)", "", {{"velocity", "", "U, tangential"}}},
+                 [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<SlidingSurface<D>>(dict); });
     registry.add("oscillation", {"rigid, x0 + A sin(2 pi f t + phase)", "", {{"amplitude", "", "A"}, {"frequency", "", "f [Hz]"}, {"phase", "0", "[rad]"}}},
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<Oscillation<D>>(dict); });
     registry.add("rotation", {"rigid 2D rotation, theta = omega t + amplitude sin(2 pi f t)", "",

@@ -5,6 +5,7 @@
 #include "functionObjects/ColumnHeight.hpp"
 #include "functionObjects/FieldErrorNorm.hpp"
 #include "functionObjects/FieldTotals.hpp"
+#include "functionObjects/LineSample.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/ReferenceSeries.hpp"
 #include "physics/FluidSystem.hpp"
@@ -133,6 +134,29 @@ TEST(ReferenceSeries, BadFilesAreErrorsNamingFileLineAndColumn) {
     EXPECT_NE(read("t,Z\n0,1\n1,2\n", "(Z Z)").find("lists 2 columns, but this function object compares 1 quantities"), std::string::npos);
     const Dictionary missing = Dictionary::fromString("file \"none.csv\"; time t; columns (Z);", "reference");
     EXPECT_NE(errorOf([&] { ReferenceSeries(missing, dir, {"front"}); }).find("cannot read"), std::string::npos);
+}
+
+TEST(LineSample, ComparesWithAProfileWhoseCoordinateDecreases) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    for (auto& v : system->fluid.vector("velocity")) v = Vec<2>(0.3, 0.0);
+    // Ghia's tables list y from 1 down to 0; a constant profile 0.5 against a uniform 0.3.
+    writeFile(dir / "profile.csv", "# from the top\ny,u\n1,0.5\n0.5,0.5\n0,0.5\n");
+    const Dictionary dict = Dictionary::fromString(
+        "type lineSample; start (0.5 0.02); end (0.5 0.98); points 25; reference { file \"profile.csv\"; coordinate y; axis y; field Ux; columns (u); scale 2; }",
+        "line");
+    LineSample<2> line(dict, contextFor(dir, *system));
+    line.execute(*system, 0.5);
+    line.execute(*system, 1.0);  // the last execution alone counts
+    const auto errors = line.errors();
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].quantity, "Ux profile");
+    EXPECT_NEAR(errors[0].norms.l1, 0.1, 1e-12);  // |0.3 - 0.5| / 2 at every sample: Shepard keeps constants
+    EXPECT_NEAR(errors[0].norms.linf, 0.1, 1e-12);
+    EXPECT_NE(errors[0].normalisation.find("25 points at t = 1"), std::string::npos) << errors[0].normalisation;
+    writeFile(dir / "profile.csv", "y,u\n1,0.5\n0.5,0.5\n0.7,0.5\n");
+    EXPECT_NE(errorOf([&] { LineSample<2>(dict, contextFor(dir, *system)); }).find("profile.csv:4: coordinate 0.7 does not come before the previous row's 0.5"),
+              std::string::npos);
 }
 
 TEST(FieldErrorNorm, NormsOfAKnownPerturbationOfTheExactField) {

@@ -3,6 +3,7 @@
 #include "motion/MotionTable.hpp"
 #include "motion/Oscillation.hpp"
 #include "motion/Rotation.hpp"
+#include "motion/SlidingSurface.hpp"
 #include "boundaryModels/RepulsiveWall.hpp"
 #include "physics/FluidSystem.hpp"
 #include "support/CaseFixture.hpp"
@@ -44,6 +45,22 @@ TEST(PatchMotion, RotationTurnsPositionsAndNormals) {
     EXPECT_NEAR((k.position - Vec<2>(std::cos(0.5), std::sin(0.5))).norm(), 0.0, 1e-12);
     EXPECT_NEAR((motion.normalAt(Vec<2>(0, 1), t) - Vec<2>(-std::sin(0.5), std::cos(0.5))).norm(), 0.0, 1e-12);
     expectConsistentKinematics<2>(motion, Vec<2>(1, 0.3), Vec<2>(0, 1), 0.37);
+}
+
+TEST(PatchMotion, SlidingSurfaceStaysAndCarriesItsVelocity) {
+    const SlidingSurface<2> lid(dictionary("velocity (1 0);"));
+    const auto k = lid.at(Vec<2>(0.3, 1), Vec<2>(0, -1), 2.5);
+    EXPECT_EQ(k.position, Vec<2>(0.3, 1));
+    EXPECT_EQ(k.velocity, Vec<2>(1, 0));
+    EXPECT_EQ(k.acceleration, Vec<2>::Zero());
+    EXPECT_FALSE(lid.deforms());
+    try {
+        lid.at(Vec<2>(0, 0.5), Vec<2>(1, 0), 0.0);  // a side wall: U would push through it
+        FAIL() << "a normal velocity was accepted";
+    } catch (const FatalError& e) {
+        EXPECT_NE(std::string(e.what()).find("slidingSurface velocity (1 0) is not tangential to the wall at (0 0.5), normal (1 0)"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(PatchMotion, GaussianBulgeMovesAlongTheNormalAndDeforms) {

@@ -115,3 +115,17 @@ TEST(ValidationCases, SphericTest2GaugesStartAtTheReservoirDepth) {
     EXPECT_LT(rows[0].linf, 2e-3);
     EXPECT_TRUE(std::isnan(rows[4].l1)) << "the pressure record starts at 0.363 s: nothing to compare yet";
 }
+
+TEST(ValidationCases, LidDrivenCavityApproachesGhia) {
+    // The shipped case (dx = 0.02, 2,500 particles) at Re 100 to t = 2: on the way to the steady state.
+    const auto rows = runVariant("lidDrivenCavity2D", {{"system/controlDict", "endTime", "2"}});
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0].quantity, "Ux profile");
+    EXPECT_EQ(rows[1].quantity, "Uy profile");
+    // Analytic (Ghia's steady profiles, |u| <= U): the driven flow is within 10 % of U already.
+    EXPECT_LT(rows[0].l1, 0.1);
+    EXPECT_LT(rows[1].l1, 0.1);
+    // Stored (this code): 6.57e-2 and 6.05e-2.
+    EXPECT_NEAR(rows[0].l1, 6.57e-2, 0.65e-2);
+    EXPECT_NEAR(rows[1].l1, 6.05e-2, 0.6e-2);
+}
