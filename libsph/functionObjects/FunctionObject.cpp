@@ -5,6 +5,7 @@
 #include "functionObjects/FieldErrorNorm.hpp"
 #include "functionObjects/FieldTotals.hpp"
 #include "functionObjects/LineSample.hpp"
+#include "functionObjects/PatchForces.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/SurgeFront.hpp"
 
@@ -59,6 +60,7 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                              {"scale", "1", "errors are divided by it"},
                              {"subtractMean", "no", "compare p up to a constant"},
                              interval}});
+    add<PatchForces<D>>(registry, "forces", {"force of the fluid on wall-particle patches, over time", "", {{"patches", "", "(name ...)"}, interval}});
     add<FieldTotals<D>>(registry, "fieldTotals", {"total mass, kinetic energy and momentum, over time", "", {interval}});
     return registry;
 }

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 using namespace sph::test;
 
@@ -128,4 +129,26 @@ TEST(ValidationCases, LidDrivenCavityApproachesGhia) {
     // Stored (this code): 6.57e-2 and 6.05e-2.
     EXPECT_NEAR(rows[0].l1, 6.57e-2, 0.65e-2);
     EXPECT_NEAR(rows[1].l1, 6.05e-2, 0.6e-2);
+}
+
+TEST(ValidationCases, StillWaterLoadsItsTankWithItsWeight) {
+    // hydrostaticTank2D at dx = 0.05 (720 particles, 1,800 kg/m of water, g = 1 after the ramp)
+    // to t = 2: the force of the water on the tank is its weight, straight down.
+    const auto dir = copyCase("hydrostaticTank2D");
+    setEntry(dir / "system/generateParticlesDict", "spacing", "0.05");
+    replaceInFile(dir / "system/controlDict", "functions\n{", "functions\n{\n    loads { type forces; patches (tank); executeInterval 1; }");
+    sph::generateParticles(dir, false);
+    sph::runCase(dir);
+    std::ifstream in(dir / "postProcessing/loads/0/forces.dat");
+    std::string header, line, last;
+    std::getline(in, header);
+    EXPECT_EQ(header, "# time tank_Fx tank_Fy");
+    while (std::getline(in, line)) last = line;
+    std::istringstream row(last);
+    double t = 0.0, fx = 0.0, fy = 0.0;
+    row >> t >> fx >> fy;
+    EXPECT_DOUBLE_EQ(t, 2.0);
+    // Analytic: (0, -M g) = (0, -1800) N/m; what is left is the water's residual motion.
+    EXPECT_NEAR(fx, 0.0, 1e-6 * 1800.0);  // the tank is symmetric
+    EXPECT_NEAR(fy, -1800.0, 0.01 * 1800.0);
 }

@@ -1,0 +1,88 @@
+#include "functionObjects/PatchForces.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sph {
+
+template <int D>
+PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<D>& context) : names_(dict.get<std::vector<std::string>>("patches")) {
+    if (names_.empty()) dict.fail("patches", "lists no patch");
+    const auto& patches = context.system.patches;
+    std::string header = "# time";
+    for (const std::string& name : names_) {
+        std::size_t k = 0;
+        while (k < patches.size() && patches[k].name != name) ++k;
+        if (k == patches.size()) {
+            std::vector<std::string> valid;
+            for (const Patch<D>& patch : patches) valid.push_back(patch.name);
+            dict.fail("patches", fmt::format("no patch '{}'; the patches are: {}", name, fmt::join(valid, ", ")));
+        }
+        if (!patches[k].model->actsThroughWallParticles())
+            dict.fail("patches", fmt::format("patch '{}' is a wall-force patch ({}); forces reports wall-particle patches (a free body's loads: bodyMotion)",
+                                             name, patches[k].model->describe()));
+        patches_.push_back(k);
+        for (int d = 0; d < D; ++d) header += fmt::format(" {}_F{}", name, "xyz"[d]);
+    }
+    out_ = TimeSeriesFile(context.outputDirectory, "forces.dat", header);
+}
+
+template <int D>
+std::string PatchForces<D>::describe() const {
+    return fmt::format("forces on {}", fmt::join(names_, ", "));
+}
+
+template <int D>
+std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
+    const auto& x = system.fluid.position;
+    const auto& v = system.fluid.vector("velocity");
+    const auto& m = system.fluid.scalar("mass");
+    const auto& rho = system.fluid.scalar("density");
+    const auto& p = system.fluid.scalar("pressure");
+    const auto& xWall = system.walls.position;
+    const auto& mWall = system.walls.scalar("mass");
+    const auto& rhoWall = system.walls.scalar("density");
+    const auto& pWall = system.walls.scalar("pressure");
+    const double eta2 = 0.01 * system.smoothingLength() * system.smoothingLength();  // as the fluid's viscous term
+    std::vector<Vec<D>> result;
+    std::visit(
+        [&](const auto& kernel, const auto& viscosity) {
+            constexpr bool viscous = std::decay_t<decltype(viscosity)>::enabled;
+            const Vec<D>* vWallViscous = viscous ? system.walls.vector("viscousVelocity").data() : nullptr;
+            for (const std::size_t k : patches_) {
+                const Patch<D>& patch = system.patches[k];
+                Vec<D> force = Vec<D>::Zero();
+                for (std::size_t w = patch.begin; w < patch.end; ++w)
+                    system.fluidCells().forEachNeighbour(xWall[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
+                        const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
+                        const double F = kernel.gradientFactor(std::sqrt(r2));
+                        Vec<D> acceleration = -(mWall[w] * (p[i] / (rho[i] * rho[i]) + pWall[w] / (rhoWall[w] * rhoWall[w])) * F) * r;
+                        if constexpr (viscous) {
+                            const Vec<D> viw = v[i] - vWallViscous[w];
+                            const double factor = viscosity.pairFactor(viw.dot(r), r2, 1.0 / (r2 + eta2), rho[i], rhoWall[w], F);
+                            acceleration += (mWall[w] * factor) * (std::decay_t<decltype(viscosity)>::alongSeparation ? r : viw);
+                        }
+                        force -= m[i] * acceleration;
+                    });
+                result.push_back(force);
+            }
+        },
+        system.models().kernel, system.models().viscosity);
+    return result;
+}
+
+template <int D>
+void PatchForces<D>::execute(const FluidSystem<D>& system, double t) {
+    std::string line = fmt::format("{:.9g}", t);
+    for (const Vec<D>& force : forces(system)) line += fmt::format(" {:.9g}", fmt::join(force, " "));
+    out_.append(line);
+}
+
+template class PatchForces<1>;
+template class PatchForces<2>;
+template class PatchForces<3>;
+
+}  // namespace sph

@@ -1,0 +1,37 @@
+// forces: the force the fluid exerts on wall patches, over time. For wall-particle patches
+// (dummyParticles, dynamicBoundary) it is the reaction of the fluid-wall pair terms of the
+// momentum equation, summed over the patch's particles w and their fluid neighbours i:
+//   F = -sum_w sum_i m_i m_w [ -(p_i/rho_i^2 + p_w/rho_w^2) grad W_iw + viscous term ]
+// (the same terms, with the same pressures and viscosity, as the fluid's acceleration). Writes
+// postProcessing/<name>/<t0>/forces.dat: time, then the force components of each patch. In
+// still water the patches of a tank carry the water's weight. A wall-force patch (repulsion,
+// deficiency correction) or an unknown patch is an error before the first step; a free body's
+// loads are reported by bodyMotion.
+// Example (system/controlDict, functions):
+//   wallLoads { type forces; patches (tank); executeInterval 0.01; }
+#pragma once
+
+#include "core/Vector.hpp"
+#include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
+
+#include <vector>
+
+namespace sph {
+
+template <int D>
+class PatchForces : public FunctionObject<D> {
+public:
+    PatchForces(const Dictionary& dict, const FunctionObjectContext<D>& context);
+    std::string describe() const override;
+    void execute(const FluidSystem<D>& system, double t) override;
+
+    std::vector<Vec<D>> forces(const FluidSystem<D>& system) const;  // one per patch (exposed for tests)
+
+private:
+    std::vector<std::string> names_;
+    std::vector<std::size_t> patches_;  // indices into the system's patches
+    TimeSeriesFile out_;
+};
+
+}  // namespace sph
