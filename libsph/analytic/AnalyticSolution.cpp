@@ -18,22 +18,29 @@ AnalyticSolutionRegistry<D> makeAnalyticSolutionRegistry() {
     registry.add("hydrostatic", {"still water, p = rho0 |g| (H - z)", "", {{"freeSurfaceHeight", "", "H"}}},
                  [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<HydrostaticPressure<D>>(dict); });
     if constexpr (D >= 2) {
-        registry.add("poiseuille", {"body-force-driven channel start-up (series)", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214",
-                                    {{"F", "", "body force along x"}, {"L", "", "channel width"}, {"nu", "", "kinematic viscosity"}}},
+        registry.add("poiseuille",
+                     {"body-force-driven channel start-up (series)",
+                      "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214",
+                      {{"F", "", "body force along x"}, {"L", "", "channel width"}, {"nu", "", "kinematic viscosity"}}},
                      [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<PoiseuilleMorris1997<D>>(dict); });
-        registry.add("couette", {"impulsively started upper plate (series)", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214",
-                                 {{"V0", "", "upper plate velocity along x"}, {"L", "", "channel width"}, {"nu", "", "kinematic viscosity"}}},
+        registry.add("couette",
+                     {"impulsively started upper plate (series)",
+                      "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214",
+                      {{"V0", "", "upper plate velocity along x"}, {"L", "", "channel width"}, {"nu", "", "kinematic viscosity"}}},
                      [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<CouetteMorris1997<D>>(dict); });
     }
     if constexpr (D == 2) {
-        registry.add("taylorGreen", {"decaying vortex on a periodic square", "Taylor & Green, Proc. R. Soc. A 158 (1937) 499",
-                                     {{"U", "", "velocity scale"}, {"L", "", "side of the square"}, {"nu", "", "kinematic viscosity"}}},
+        registry.add("taylorGreen",
+                     {"decaying vortex on a periodic square",
+                      "Taylor & Green, Proc. R. Soc. A 158 (1937) 499",
+                      {{"U", "", "velocity scale"}, {"L", "", "side of the square"}, {"nu", "", "kinematic viscosity"}}},
                      [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<TaylorGreen2D<D>>(dict); });
-        registry.add("ellipticalDrop", {"free drop stretched by u = -A x, v = A y (ODE)", "Monaghan, J. Comput. Phys. 110 (1994) 399",
-                                        {{"A0", "", "initial rate A(0)"}, {"R0", "", "initial radius"}, {"centre", "(0 0)", "centre of the drop"}}},
-                     [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> {
-                         return std::make_unique<EllipticalDropMonaghan1994<D>>(dict);
-                     });
+        registry.add(
+            "ellipticalDrop",
+            {"free drop stretched by u = -A x, v = A y (ODE)",
+             "Monaghan, J. Comput. Phys. 110 (1994) 399",
+             {{"A0", "", "initial rate A(0)"}, {"R0", "", "initial radius"}, {"centre", "(0 0)", "centre of the drop"}}},
+            [](const Dictionary& dict) -> std::unique_ptr<AnalyticSolution<D>> { return std::make_unique<EllipticalDropMonaghan1994<D>>(dict); });
     }
     return registry;
 }

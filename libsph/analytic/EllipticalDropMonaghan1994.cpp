@@ -7,7 +7,9 @@ namespace sph {
 
 template <int D>
 EllipticalDropMonaghan1994<D>::EllipticalDropMonaghan1994(const Dictionary& dict)
-    : centre_(dict.found("centre") ? dict.getVector<D>("centre") : Vec<D>::Zero()), initialRate_(dict.getPositive("A0")), radius_(dict.getPositive("R0")),
+    : centre_(dict.found("centre") ? dict.getVector<D>("centre") : Vec<D>::Zero()),
+      initialRate_(dict.getPositive("A0")),
+      radius_(dict.getPositive("R0")),
       cached_{initialRate_, 1.0} {}
 
 template <int D>

@@ -7,7 +7,8 @@ namespace sph {
 
 template <int D>
 TaylorGreen2D<D>::TaylorGreen2D(const Dictionary& dict)
-    : speed_(dict.get<double>("U")), side_(dict.getPositive("L")),
+    : speed_(dict.get<double>("U")),
+      side_(dict.getPositive("L")),
       decayRate_(-8.0 * std::numbers::pi * std::numbers::pi * dict.getNonNegative("nu") / (side_ * side_)) {}
 
 template <int D>

@@ -13,7 +13,8 @@ namespace sph {
 
 template <int D>
 ColumnHeight<D>::ColumnHeight(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : points_(readSamplePoints(dict, "points", context.system, "gauge")), radius_(dict.getPositiveOrDefault("radius", context.system.smoothingLength())) {
+    : points_(readSamplePoints(dict, "points", context.system, "gauge")),
+      radius_(dict.getPositiveOrDefault("radius", context.system.smoothingLength())) {
     const FluidSystem<D>& system = context.system;
     const Vec<D> g = system.gravityAt(std::numeric_limits<double>::max());
     if (!(g.norm() > 0.0)) dict.fail("type", "columnHeight measures against gravity, and this case has none");

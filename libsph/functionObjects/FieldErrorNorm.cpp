@@ -9,7 +9,9 @@ namespace sph {
 
 template <int D>
 FieldErrorNorm<D>::FieldErrorNorm(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : field_(dict.get<std::string>("field")), scale_(dict.getPositiveOrDefault("scale", 1.0)), rho0_(context.rho0),
+    : field_(dict.get<std::string>("field")),
+      scale_(dict.getPositiveOrDefault("scale", 1.0)),
+      rho0_(context.rho0),
       subtractMean_(dict.getOrDefault("subtractMean", false)) {
     const Dictionary& solution = dict.subDict("solution");
     solutionType_ = solution.get<std::string>("type");
@@ -18,7 +20,8 @@ FieldErrorNorm<D>::FieldErrorNorm(const Dictionary& dict, const FunctionObjectCo
     if (field_ == "p" && !solution_->hasPressure())
         dict.fail("field", fmt::format("the {} solution has no pressure field; compare U", solutionType_));
     if (subtractMean_ && field_ != "p") dict.fail("subtractMean", "applies to the field p only");
-    out_ = TimeSeriesFile(context.outputDirectory, "error.dat", fmt::format("# time L1 L2 Linf of {} - {}_exact, divided by {:g}", field_, field_, scale_));
+    out_ = TimeSeriesFile(context.outputDirectory, "error.dat",
+                          fmt::format("# time L1 L2 Linf of {} - {}_exact, divided by {:g}", field_, field_, scale_));
 }
 
 template <int D>

@@ -60,7 +60,8 @@ template <int D>
 void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, const std::string& field) {
     const bool valid = field == "p" || field == "rho" || field == "U" || field == "Ux" || (field == "Uy" && D >= 2) || (field == "Uz" && D >= 3);
     if (!valid)
-        dict.fail(keyword, fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
+        dict.fail(keyword,
+                  fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
 }
 
 template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystem<1>&, const Vec<1>&);

@@ -13,7 +13,10 @@ namespace sph {
 
 template <int D>
 LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : start_(dict.getVector<D>("start")), end_(dict.getVector<D>("end")), points_(dict.get<int>("points")), rho0_(context.rho0),
+    : start_(dict.getVector<D>("start")),
+      end_(dict.getVector<D>("end")),
+      points_(dict.get<int>("points")),
+      rho0_(context.rho0),
       directory_(context.outputDirectory) {
     if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) freeSurfaceHeight_ = reference->get<double>("freeSurfaceHeight");
@@ -23,11 +26,11 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
         checkInterpolatedField<D>(*reference, "field", profileField_);
         const std::string axis = reference->get<std::string>("axis");
         profileAxis_ = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : D;
-        if (profileAxis_ >= D) reference->fail("axis", fmt::format("expected one of x{}{} for a {}D case, found '{}'", D > 1 ? ", y" : "", D > 2 ? ", z" : "", D, axis));
+        if (profileAxis_ >= D)
+            reference->fail("axis", fmt::format("expected one of x{}{} for a {}D case, found '{}'", D > 1 ? ", y" : "", D > 2 ? ", z" : "", D, axis));
         profile_.emplace(*reference, context.caseDirectory, std::vector<std::string>{profileField_ + " profile"}, ReferenceSeries::Along::Coordinate);
     }
-    if (freeSurfaceHeight_)
-        errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
+    if (freeSurfaceHeight_) errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>

@@ -22,8 +22,9 @@ PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<
             dict.fail("patches", fmt::format("no patch '{}'; the patches are: {}", name, fmt::join(valid, ", ")));
         }
         if (!patches[k].model->actsThroughWallParticles())
-            dict.fail("patches", fmt::format("patch '{}' is a wall-force patch ({}); forces reports wall-particle patches (a free body's loads: bodyMotion)",
-                                             name, patches[k].model->describe()));
+            dict.fail("patches",
+                      fmt::format("patch '{}' is a wall-force patch ({}); forces reports wall-particle patches (a free body's loads: bodyMotion)",
+                                  name, patches[k].model->describe()));
         patches_.push_back(k);
         for (int d = 0; d < D; ++d) header += fmt::format(" {}_F{}", name, "xyz"[d]);
     }

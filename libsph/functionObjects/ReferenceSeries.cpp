@@ -76,14 +76,15 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
         // Time increases; a coordinate runs either way, the direction its first two rows take.
         const bool decreasing = along == Along::Coordinate && !times_.empty() && (times_.size() >= 2 ? times_[1] < times_[0] : t < times_[0]);
         if (!times_.empty() && !(decreasing ? t < times_.back() : t > times_.back()))
-            throw FatalError(fmt::format("error: {}: {} {:g} does not come {} the previous row's {:g}; a reference's {} must {}", where(lineNumber), abscissa,
-                                         row[0], decreasing ? "before" : "after", times_.back() / timeScale, abscissa,
+            throw FatalError(fmt::format("error: {}: {} {:g} does not come {} the previous row's {:g}; a reference's {} must {}", where(lineNumber),
+                                         abscissa, row[0], decreasing ? "before" : "after", times_.back() / timeScale, abscissa,
                                          along == Along::Time ? "increase" : "increase or decrease throughout"));
         times_.push_back(t);
         for (std::size_t c = 0; c < columns.size(); ++c) values_[c].push_back(row[c + 1] * valueScale);
     }
     if (header.empty()) throw FatalError(fmt::format("error: '{}' has no header row", file_.string()));
-    if (times_.size() < 2) throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), times_.size()));
+    if (times_.size() < 2)
+        throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), times_.size()));
     if (times_.back() < times_.front()) {
         std::reverse(times_.begin(), times_.end());
         for (auto& column : values_) std::reverse(column.begin(), column.end());
@@ -119,8 +120,8 @@ std::vector<ReportedError> ReferenceSeries::errors() const {
 }
 
 std::string ReferenceSeries::describe() const {
-    return fmt::format("reference {} ({} rows, {} in [{:g}, {:g}])", file_.filename().string(), times_.size(), along_ == Along::Time ? "t" : "coordinate",
-                       times_.front(), times_.back());
+    return fmt::format("reference {} ({} rows, {} in [{:g}, {:g}])", file_.filename().string(), times_.size(),
+                       along_ == Along::Time ? "t" : "coordinate", times_.front(), times_.back());
 }
 
 }  // namespace sph

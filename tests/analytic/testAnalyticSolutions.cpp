@@ -53,8 +53,8 @@ TEST(AnalyticSolutions, TaylorGreenDecaysAtItsRateAndIsDivergenceFree) {
     // div u = 0 by central differences at an arbitrary point.
     const Vec<2> x(0.31, 0.77);
     const double e = 1e-6, t = 0.4;
-    const double divergence = (tg->velocity(x + Vec<2>(e, 0), t).x() - tg->velocity(x - Vec<2>(e, 0), t).x() +
-                               tg->velocity(x + Vec<2>(0, e), t).y() - tg->velocity(x - Vec<2>(0, e), t).y()) /
+    const double divergence = (tg->velocity(x + Vec<2>(e, 0), t).x() - tg->velocity(x - Vec<2>(e, 0), t).x() + tg->velocity(x + Vec<2>(0, e), t).y() -
+                               tg->velocity(x - Vec<2>(0, e), t).y()) /
                               (2 * e);
     EXPECT_NEAR(divergence, 0.0, 1e-8);
     // p = -rho U^2 e^{2bt} (cos 4 pi x + cos 4 pi y)/4: -rho/2 e^{2bt} at the origin.

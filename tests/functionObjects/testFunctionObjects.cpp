@@ -93,8 +93,9 @@ TEST(Probes, OutsideTheDomainOrAnUnknownFieldIsAnErrorBeforeTheRun) {
     const auto dir = freshDirectory();
     auto system = makeBlock();
     const Dictionary outside = Dictionary::fromString("type probes; fields (p); points ((0.5 0.5) (1.2 0.5));", "probes");
-    EXPECT_NE(errorOf([&] { Probes<2>(outside, contextFor(dir, *system)); }).find("probe 1 at (1.2 0.5) lies outside the domain [(-0.1 -0.1), (1.1 1.1)]"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { Probes<2>(outside, contextFor(dir, *system)); }).find("probe 1 at (1.2 0.5) lies outside the domain [(-0.1 -0.1), (1.1 1.1)]"),
+        std::string::npos);
     const Dictionary unknown = Dictionary::fromString("type probes; fields (T); points ((0.5 0.5));", "probes");
     EXPECT_NE(errorOf([&] { Probes<2>(unknown, contextFor(dir, *system)); }).find("unknown field 'T'; valid fields in 2D are: p, rho, U, Ux, Uy"),
               std::string::npos);
@@ -109,9 +110,9 @@ TEST(ReferenceSeries, InterpolatesInTimeAndAccumulatesNormsOverTheOverlap) {
     EXPECT_DOUBLE_EQ(reference.at(0.25)->at(0), 4.0);
     EXPECT_DOUBLE_EQ(reference.at(0.75)->at(0), 6.0);
     EXPECT_FALSE(reference.at(1.5));
-    reference.compare(0.25, {5.0});  // error +1
-    reference.compare(0.75, {3.0});  // error -3
-    reference.compare(2.0, {100.0}); // outside: not compared
+    reference.compare(0.25, {5.0});   // error +1
+    reference.compare(0.75, {3.0});   // error -3
+    reference.compare(2.0, {100.0});  // outside: not compared
     const auto errors = reference.errors();
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_EQ(errors[0].quantity, "front");
@@ -143,7 +144,8 @@ TEST(LineSample, ComparesWithAProfileWhoseCoordinateDecreases) {
     // Ghia's tables list y from 1 down to 0; a constant profile 0.5 against a uniform 0.3.
     writeFile(dir / "profile.csv", "# from the top\ny,u\n1,0.5\n0.5,0.5\n0,0.5\n");
     const Dictionary dict = Dictionary::fromString(
-        "type lineSample; start (0.5 0.02); end (0.5 0.98); points 25; reference { file \"profile.csv\"; coordinate y; axis y; field Ux; columns (u); scale 2; }",
+        "type lineSample; start (0.5 0.02); end (0.5 0.98); points 25; reference { file \"profile.csv\"; coordinate y; axis y; field Ux; columns "
+        "(u); scale 2; }",
         "line");
     LineSample<2> line(dict, contextFor(dir, *system));
     line.execute(*system, 0.5);
@@ -155,7 +157,9 @@ TEST(LineSample, ComparesWithAProfileWhoseCoordinateDecreases) {
     EXPECT_NEAR(errors[0].norms.linf, 0.1, 1e-12);
     EXPECT_NE(errors[0].normalisation.find("25 points at t = 1"), std::string::npos) << errors[0].normalisation;
     writeFile(dir / "profile.csv", "y,u\n1,0.5\n0.5,0.5\n0.7,0.5\n");
-    EXPECT_NE(errorOf([&] { LineSample<2>(dict, contextFor(dir, *system)); }).find("profile.csv:4: coordinate 0.7 does not come before the previous row's 0.5"),
+    EXPECT_NE(errorOf([&] {
+                  LineSample<2>(dict, contextFor(dir, *system));
+              }).find("profile.csv:4: coordinate 0.7 does not come before the previous row's 0.5"),
               std::string::npos);
 }
 
