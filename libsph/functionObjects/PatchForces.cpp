@@ -38,7 +38,6 @@ std::string PatchForces<D>::describe() const {
 
 template <int D>
 std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
-    const auto& x = system.fluid.position;
     const auto& v = system.fluid.vector("velocity");
     const auto& m = system.fluid.scalar("mass");
     const auto& rho = system.fluid.scalar("density");
