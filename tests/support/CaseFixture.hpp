@@ -27,13 +27,20 @@ inline void writeFile(const std::filesystem::path& file, const std::string& text
     std::ofstream(file) << text;
 }
 
-// Copies a shipped case's dictionaries (system/, constant/) and reference data (*.csv) into a fresh directory.
+// A case's reference data: a .csv file that opens with its '#' source header (a script's output,
+// such as damBreak2D's frontComparison.csv after ./Allrun, does not).
+inline bool isReferenceData(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return file.extension() == ".csv" && in.peek() == '#';
+}
+
+// Copies a shipped case's dictionaries (system/, constant/) and reference data into a fresh directory.
 inline std::filesystem::path copyCase(const std::string& name, const std::string& variant = "") {
     const std::filesystem::path dir = freshDirectory(variant);
     const std::filesystem::path source = sourceDirectory() / "cases" / name;
     for (const char* part : {"system", "constant"}) std::filesystem::copy(source / part, dir / part, std::filesystem::copy_options::recursive);
     for (const auto& file : std::filesystem::directory_iterator(source))
-        if (file.is_regular_file() && file.path().extension() == ".csv") std::filesystem::copy(file.path(), dir);
+        if (file.is_regular_file() && isReferenceData(file.path())) std::filesystem::copy(file.path(), dir);
     return dir;
 }
 

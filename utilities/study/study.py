@@ -166,7 +166,7 @@ def points_of(settings):
 
 
 def prepare(settings, directory, edits):
-    """A copy of the case (dictionaries and data files, no results) with the point's edits."""
+    """A copy of the case (dictionaries and reference data: .csv files opening with a '#' header) with the point's edits."""
     if os.path.exists(directory):
         shutil.rmtree(directory)
     os.makedirs(directory)
@@ -175,7 +175,7 @@ def prepare(settings, directory, edits):
         source = os.path.join(case, item)
         if item in ("system", "constant"):
             shutil.copytree(source, os.path.join(directory, item))
-        elif os.path.isfile(source) and item.endswith(".csv"):
+        elif os.path.isfile(source) and item.endswith(".csv") and open(source).read(1) == "#":  # reference data, not a script's output
             shutil.copy(source, directory)
     for file, entry, value in edits:
         target = os.path.join(directory, file)
