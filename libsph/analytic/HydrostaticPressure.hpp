@@ -11,6 +11,7 @@ template <int D>
 class HydrostaticPressure : public AnalyticSolution<D> {
 public:
     explicit HydrostaticPressure(const Dictionary& dict) : freeSurfaceHeight_(dict.get<double>("freeSurfaceHeight")) {}
+    double freeSurfaceHeight() const { return freeSurfaceHeight_; }
     Vec<D> velocity(const Vec<D>&, double) const override { return Vec<D>::Zero(); }
     bool hasPressure() const override { return true; }
     double pressure(const Vec<D>& x, double, const FlowConstants<D>& constants) const override {

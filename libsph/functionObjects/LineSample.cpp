@@ -19,7 +19,7 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
       rho0_(context.rho0),
       directory_(context.outputDirectory) {
     if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
-    if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) freeSurfaceHeight_ = reference->get<double>("freeSurfaceHeight");
+    if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) hydrostatic_.emplace(*reference);
     std::filesystem::create_directories(directory_);
     if (const Dictionary* reference = dict.findSubDict("reference")) {
         profileField_ = reference->get<std::string>("field");
@@ -30,13 +30,13 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
             reference->fail("axis", fmt::format("expected one of x{}{} for a {}D case, found '{}'", D > 1 ? ", y" : "", D > 2 ? ", z" : "", D, axis));
         profile_.emplace(*reference, context.caseDirectory, std::vector<std::string>{profileField_ + " profile"}, ReferenceSeries::Along::Coordinate);
     }
-    if (freeSurfaceHeight_) errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
+    if (hydrostatic_) errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>
 std::string LineSample<D>::describe() const {
     return fmt::format("lineSample: start ({:g}), end ({:g}), points {}{}{}", fmt::join(start_, " "), fmt::join(end_, " "), points_,
-                       freeSurfaceHeight_ ? fmt::format(", hydrostatic reference H = {:g}", *freeSurfaceHeight_) : "",
+                       hydrostatic_ ? fmt::format(", hydrostatic reference H = {:g}", hydrostatic_->freeSurfaceHeight()) : "",
                        profile_ ? ", " + profileField_ + " against " + profile_->describe() : "");
 }
 
@@ -54,18 +54,16 @@ std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSys
 template <int D>
 void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
     const std::vector<Sample> samples = sample(system);
-    const Vec<D> g = system.gravityAt(t);
-    const double gravity = g.norm();
-    const Vec<D> up = gravity > 0.0 ? Vec<D>(-g / gravity) : Vec<D>::Zero();
-    std::string csv = freeSurfaceHeight_ ? "distance,x,y,z,p,rho,Ux,Uy,Uz,p_ref\n" : "distance,x,y,z,p,rho,Ux,Uy,Uz\n";
+    const FlowConstants<D> constants{rho0_, system.gravityAt(t)};
+    std::string csv = hydrostatic_ ? "distance,x,y,z,p,rho,Ux,Uy,Uz,p_ref\n" : "distance,x,y,z,p,rho,Ux,Uy,Uz\n";
     ErrorAccumulator errors;
     for (const Sample& s : samples) {
         csv += fmt::format("{:.9g}", (s.position - start_).norm());
         for (int d = 0; d < 3; ++d) csv += fmt::format(",{:.9g}", d < D ? s.position[d] : 0.0);
         csv += fmt::format(",{:.9g},{:.9g}", s.pressure, s.density);
         for (int d = 0; d < 3; ++d) csv += fmt::format(",{:.9g}", d < D ? s.velocity[d] : 0.0);
-        if (freeSurfaceHeight_) {
-            const double reference = rho0_ * gravity * (*freeSurfaceHeight_ - s.position.dot(up));
+        if (hydrostatic_) {
+            const double reference = hydrostatic_->pressure(s.position, t, constants);
             csv += fmt::format(",{:.9g}", reference);
             errors.add(s.pressure - reference);
         }
@@ -80,8 +78,8 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
     const auto timeDirectory = directory_ / timeName(t);
     std::filesystem::create_directories(timeDirectory);
     writeTextAtomically(timeDirectory / "line.csv", csv);
-    if (freeSurfaceHeight_) {
-        const double scale = rho0_ * gravity * *freeSurfaceHeight_;
+    if (hydrostatic_) {
+        const double scale = rho0_ * constants.gravity.norm() * hydrostatic_->freeSurfaceHeight();
         time_ = t;
         last_ = scale > 0.0 ? errors.norms(scale) : ErrorNorms{0.0, 0.0, 0.0};
         errorOut_.append(fmt::format("{:.9g} {:.6e} {:.6e}", t, last_.l2, last_.linf));
@@ -91,7 +89,7 @@ void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
 template <int D>
 std::vector<ReportedError> LineSample<D>::errors() const {
     std::vector<ReportedError> errors;
-    if (freeSurfaceHeight_) errors.push_back({"hydrostatic p", last_, fmt::format("rho0 |g| H, {} samples at t = {:g}", points_, time_)});
+    if (hydrostatic_) errors.push_back({"hydrostatic p", last_, fmt::format("rho0 |g| H, {} samples at t = {:g}", points_, time_)});
     for (ReportedError error : errorsOf(profile_)) {
         error.normalisation += fmt::format(" at t = {:g}", time_);
         errors.push_back(error);

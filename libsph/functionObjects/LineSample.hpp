@@ -1,7 +1,7 @@
 // lineSample: pressure, density and velocity along a line, interpolated from the fluid particles
 // (KernelInterpolation.hpp). Each execution writes postProcessing/<name>/<t0>/<time>/line.csv
 // (distance, position, p, rho, velocity[, p_ref]). With a hydrostaticReference it compares p with
-// rho0 |g| (H - z), z measured against gravity, and appends to error.dat the L2 and max
+// rho0 |g| (H - z) (analytic/HydrostaticPressure.hpp), and appends to error.dat the L2 and max
 // error over the samples, normalised by rho0 |g| H; the run's summary reports the last execution's.
 // With a reference profile (ReferenceSeries.hpp, Along::Coordinate) it compares one field at
 // every sample with a CSV column interpolated at the sample's coordinate along `axis`; the
@@ -19,6 +19,7 @@
 //   }
 #pragma once
 
+#include "analytic/HydrostaticPressure.hpp"
 #include "core/Vector.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "functionObjects/ReferenceSeries.hpp"
@@ -48,7 +49,7 @@ public:
 private:
     Vec<D> start_, end_;
     int points_;
-    std::optional<double> freeSurfaceHeight_;
+    std::optional<HydrostaticPressure<D>> hydrostatic_;
     double rho0_;
     std::filesystem::path directory_;
     TimeSeriesFile errorOut_;

@@ -1,6 +1,7 @@
 #include "functionObjects/PatchForces.hpp"
 
 #include "physics/FluidSystem.hpp"
+#include "physics/FluidWallPair.hpp"
 
 #include <fmt/format.h>
 
@@ -42,30 +43,21 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
     const auto& m = system.fluid.scalar("mass");
     const auto& rho = system.fluid.scalar("density");
     const auto& p = system.fluid.scalar("pressure");
-    const auto& xWall = system.walls.position;
-    const auto& mWall = system.walls.scalar("mass");
-    const auto& rhoWall = system.walls.scalar("density");
-    const auto& pWall = system.walls.scalar("pressure");
-    const double eta2 = 0.01 * system.smoothingLength() * system.smoothingLength();  // as the fluid's viscous term
+    const auto& walls = system.walls;
+    const WallPairFields<D> wall{walls.scalar("mass").data(), walls.scalar("pressure").data(), walls.scalar("density").data(),
+                                 system.viscous() ? walls.vector("viscousVelocity").data() : nullptr};
+    const double eta2 = viscousRegularisation(system.smoothingLength());
     std::vector<Vec<D>> result;
     std::visit(
         [&](const auto& kernel, const auto& viscosity) {
-            constexpr bool viscous = std::decay_t<decltype(viscosity)>::enabled;
-            const Vec<D>* vWallViscous = viscous ? system.walls.vector("viscousVelocity").data() : nullptr;
             for (const std::size_t k : patches_) {
                 const Patch<D>& patch = system.patches[k];
                 Vec<D> force = Vec<D>::Zero();
                 for (std::size_t w = patch.begin; w < patch.end; ++w)
-                    system.fluidCells().forEachNeighbour(xWall[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
+                    system.fluidCells().forEachNeighbour(walls.position[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
                         const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
                         const double F = kernel.gradientFactor(std::sqrt(r2));
-                        Vec<D> acceleration = -(mWall[w] * (p[i] / (rho[i] * rho[i]) + pWall[w] / (rhoWall[w] * rhoWall[w])) * F) * r;
-                        if constexpr (viscous) {
-                            const Vec<D> viw = v[i] - vWallViscous[w];
-                            const double factor = viscosity.pairFactor(viw.dot(r), r2, 1.0 / (r2 + eta2), rho[i], rhoWall[w], F);
-                            acceleration += (mWall[w] * factor) * (std::decay_t<decltype(viscosity)>::alongSeparation ? r : viw);
-                        }
-                        force -= m[i] * acceleration;
+                        force -= m[i] * fluidWallAcceleration<true>(viscosity, r, r2, F, eta2, p[i] / (rho[i] * rho[i]), rho[i], v[i], wall, w);
                     });
                 result.push_back(force);
             }

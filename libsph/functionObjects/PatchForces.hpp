@@ -2,7 +2,7 @@
 // (dummyParticles, dynamicBoundary) it is the reaction of the fluid-wall pair terms of the
 // momentum equation, summed over the patch's particles w and their fluid neighbours i:
 //   F = -sum_w sum_i m_i m_w [ -(p_i/rho_i^2 + p_w/rho_w^2) grad W_iw + viscous term ]
-// (the same terms, with the same pressures and viscosity, as the fluid's acceleration). Writes
+// (physics/FluidWallPair.hpp: the very terms of the fluid's acceleration). Writes
 // postProcessing/<name>/<t0>/forces.dat: time, then the force components of each patch. In
 // still water the patches of a tank carry the water's weight. A wall-force patch (repulsion,
 // deficiency correction) or an unknown patch is an error before the first step; a free body's

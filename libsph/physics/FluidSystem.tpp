@@ -1,6 +1,7 @@
 // Implementation of FluidSystem<D>, included once per dimension by FluidSystem<D>.cpp so the
 // hot loops of each dimension compile in parallel.
 #include "physics/FluidSystem.hpp"
+#include "physics/FluidWallPair.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -293,15 +294,14 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     double* drho = Continuity ? s.fluid.scalar("densityRate").data() : nullptr;
     const Vec<D> bodyForce = Pressure ? gravity : Vec<D>::Zero();
     const Vec<D>* vWall = s.walls.vector("velocity").data();
-    const Vec<D>* vWallViscous = Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr;
     const double* mWall = s.walls.scalar("mass").data();
-    const double* rhoWall = s.walls.scalar("density").data();
-    const double* pWall = s.walls.scalar("pressure").data();
+    const WallPairFields<D> wall{mWall, s.walls.scalar("pressure").data(), s.walls.scalar("density").data(),
+                                 Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr};
     const double radius = s.supportRadius(), radius2 = radius * radius;
     const std::array<double, D> period = cells.periods();
     std::array<double, D> inversePeriod{};
     for (int d = 0; d < D; ++d) inversePeriod[d] = period[d] > 0.0 ? 1.0 / period[d] : 0.0;
-    const double eta2 = 0.01 * s.smoothingLength() * s.smoothingLength();  // regularises 1/r^2 (Monaghan 1992)
+    const double eta2 = viscousRegularisation(s.smoothingLength());
     const auto& wallCells = s.wallCells();
 
     const auto threads = static_cast<std::size_t>(omp_get_max_threads());
@@ -449,13 +449,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
             }
             wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
                 const double F = kernel.gradientFactor(std::sqrt(r2));
-                if constexpr (Pressure) acceleration -= (mWall[w] * (pOverRho2 + pWall[w] / (rhoWall[w] * rhoWall[w])) * F) * r;
+                acceleration += fluidWallAcceleration<Pressure>(viscosity, r, r2, F, eta2, pOverRho2, rho[i], v[i], wall, w);
                 if constexpr (DensityRate) densityRate += mWall[w] * F * (v[i] - vWall[w]).dot(r);
-                if constexpr (Viscosity::enabled) {
-                    const Vec<D> viw = v[i] - vWallViscous[w];
-                    const double factor = viscosity.pairFactor(viw.dot(r), r2, 1.0 / (r2 + eta2), rho[i], rhoWall[w], F);
-                    acceleration += (mWall[w] * factor) * (Viscosity::alongSeparation ? r : viw);
-                }
             });
             a[i] = acceleration;
             if constexpr (Continuity) drho[i] = densityRate;

@@ -367,6 +367,8 @@ def main():
     parser.add_argument("--threads", type=int, default=1, help="OpenMP threads per run (default 1)")
     parser.add_argument("--jobs", type=int, help="runs at a time (default: cores / threads)")
     args = parser.parse_args()
+    if args.threads < 1 or (args.jobs is not None and args.jobs < 1):
+        sys.exit("error: --threads and --jobs must be at least 1, found %s and %s" % (args.threads, args.jobs))
     try:
         settings = read_study(args.study)
     except (StudyError, foamDictionary.DictionaryError, OSError) as e:
