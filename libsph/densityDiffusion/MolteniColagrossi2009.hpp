@@ -5,8 +5,6 @@
 // Example (system/sphSchemes):   densityDiffusion { type molteniColagrossi; delta 0.1; }
 #pragma once
 
-#include <array>
-
 namespace sph {
 
 struct MolteniColagrossi2009 {
@@ -15,9 +13,8 @@ struct MolteniColagrossi2009 {
     MolteniColagrossi2009(double delta, double h, double c0) : delta(delta), coefficient(2.0 * delta * h * c0) {}
 
     // The pair (i, j) adds toI V_j to i's density rate and toJ V_i to j's, V = m / rho, from
-    // r_ij, r^2, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r.
-    template <std::size_t D>
-    void pairRates(const std::array<double, D>& /*rij*/, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F,
+    // r^2, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r (g.r_ij is for Fourtakas' hydrostatic part).
+    void pairRates(double /*gravityDotR*/, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F,
                    double& toI, double& toJ) const {
         toI = coefficient * (rhoi - rhoj) * F * r2 * inverseRegularisedR2;
         toJ = -toI;

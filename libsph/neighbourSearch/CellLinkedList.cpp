@@ -38,7 +38,8 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
     for (std::size_t k = 0; k < n; ++k) ++cellStart_[cellOf[k] + 1];
     for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
     sorted_.resize(n);
-    sortedPosition_.resize(n);
+    sortedPosition_.resize(n + readablePastEnd);
+    std::fill(sortedPosition_.begin() + static_cast<std::ptrdiff_t>(n), sortedPosition_.end(), Vec<D>::Zero());
     sortedCell_.resize(n);
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t k = 0; k < n; ++k) {

@@ -66,7 +66,10 @@ public:
     }
 
     // Positions in cell order (of the last build); each pair once: the neighbours of place k
-    // at later places l are those of stencilRanges(sortedPosition(k)) with l > k.
+    // at later places l are those of stencilRanges(sortedPosition(k)) with l > k. Places up to
+    // readablePastEnd beyond the last hold zeros, so that a loop in vector lanes may read whole
+    // vectors past the end of any range.
+    static constexpr std::size_t readablePastEnd = 7;
     const Vec<D>& sortedPosition(std::size_t k) const { return sortedPosition_[k]; }
     // Per direction, the period L, 0 where not periodic: r - L nearbyint(r / L) (with 1/L taken
     // as 0 there) is then the nearest image's separation with no branch.

@@ -1,7 +1,7 @@
 // The symmetric pair loop (each fluid pair once, per-thread accumulators) against a direct
 // O(N^2) sum of every term written out here from the papers' formulas: a disordered block of
 // fluid with random velocities and densities, pressure + continuity + artificial viscosity +
-// Fourtakas diffusion, in 2D and 3D, with one and two threads.
+// Fourtakas diffusion (its series and its std::pow form), in 2D and 3D, with one and two threads.
 #include "physics/FluidSystem.hpp"
 
 #include <gtest/gtest.h>
@@ -46,8 +46,9 @@ ParticleSet<D> disorderedBlock(const Scene<D>& s, unsigned seed) {
 }
 
 template <int D>
-void compareWithDirectSum(int threads) {
-    const Scene<D> s;
+void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0) {
+    Scene<D> s;
+    s.c0 = c0;
     const WendlandC2<D> kernel(s.h);
     const TaitEquationOfState eos(s.rho0, s.c0, s.gamma, 0.0);
     FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0),
@@ -113,6 +114,12 @@ TEST(PairLoop, EqualsTheDirectSumIn3D) {
     compareWithDirectSum<3>(2);
 }
 
+// c0 = 3 m/s: |y| up to 7 g 2h / c0^2 = 0.40, beyond Fourtakas' series: the loop that uses std::pow.
+TEST(PairLoop, EqualsTheDirectSumBeyondFourtakasSeries) {
+    compareWithDirectSum<2>(2, 3.0);
+    compareWithDirectSum<3>(1, 3.0);
+}
+
 TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
     const double rho0 = 1000.0, B = 20.0 * 20.0 * rho0 / 7.0;
     Fourtakas2019<2> diffusion(0.1, 0.02, 20.0, rho0, B, 7.0);
@@ -129,7 +136,7 @@ TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
     diffusion.setGravity(Vec<2>(0.0, -9.81), 10.0);  // |y| up to 0.017 * 10 / 0.04: beyond it, std::pow
     EXPECT_FALSE(diffusion.seriesHolds);
     double atY = 0.0, atMinusY = 0.0;
-    diffusion.hydrostaticDensities(0.3, atY, atMinusY);
+    diffusion.beyondSeries().hydrostaticDensities(0.3, atY, atMinusY);
     EXPECT_DOUBLE_EQ(atY, rho0 * (std::pow(1.3, 1.0 / 7.0) - 1.0));
     EXPECT_DOUBLE_EQ(atMinusY, rho0 * (std::pow(0.7, 1.0 / 7.0) - 1.0));
 }
