@@ -355,32 +355,25 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
         const double* const xs = n > 0 ? cells.sortedPosition(0).data() : nullptr;
         const double* const vs = ReadsVelocity && n > 0 ? vK[0].data() : nullptr;
 
-#pragma omp for schedule(static, chunk) nowait
-        for (std::size_t k = 0; k < n; ++k) {
-            std::array<double, D> xk, vk{};
-            for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
-            if constexpr (ReadsVelocity)
-                for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
-            // The later neighbours are listed first, the neighbours among the candidates without a
-            // branch (a third of the candidates are neighbours: a branch would be mispredicted
-            // often). In lanes, the distances of a row of cells come first.
-            if (cells.cellAt(k) != stencilCell) {  // the particles of a cell share their stencil
-                stencilCell = cells.cellAt(k);
-                stencil = cells.stencilRanges(cells.sortedPosition(k));
-            }
+        // Lists in `neighbours` the points of `list` at places from `first` on within the support
+        // radius of x, without a branch (a third of the candidates are neighbours: a branch
+        // would be mispredicted often); in lanes, the distances of a row of cells come first.
+        const auto listNeighbours = [&](const CellLinkedList<D>& list, const typename CellLinkedList<D>::StencilRanges& around,
+                                        const std::array<double, D>& x, std::size_t first) {
+            const double* const positions = list.sortedPosition(0).data();  // readable even for an empty list
             const auto distance2To = [&](std::size_t l) {
                 double r2 = 0.0;
 #pragma GCC unroll 3
                 for (int d = 0; d < D; ++d) {
-                    double r = xk[d] - xs[l * D + d];
+                    double r = x[d] - positions[l * D + d];
                     r -= period[d] * std::nearbyint(r * inversePeriod[d]);
                     r2 += r * r;
                 }
                 return r2;
             };
             std::size_t count = 0;
-            for (const auto& range : stencil) {
-                const std::size_t begin = std::max<std::size_t>(range.begin, k + 1);
+            for (const auto& range : around) {
+                const std::size_t begin = std::max<std::size_t>(range.begin, first);
                 if (begin >= range.end) continue;
                 const std::size_t candidates = range.end - begin;
                 if (neighbours.size() < count + candidates + lanes) {
@@ -406,6 +399,21 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                     }
                 }
             }
+            return count;
+        };
+
+#pragma omp for schedule(static, chunk) nowait
+        for (std::size_t k = 0; k < n; ++k) {
+            std::array<double, D> xk, vk{};
+            for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
+            if constexpr (ReadsVelocity)
+                for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
+            // The later neighbours are listed first.
+            if (cells.cellAt(k) != stencilCell) {  // the particles of a cell share their stencil
+                stencilCell = cells.cellAt(k);
+                stencil = cells.stencilRanges(cells.sortedPosition(k));
+            }
+            const std::size_t count = listNeighbours(cells, stencil, xk, k + 1);
             // In lanes, what k receives is summed in registers and what each neighbour receives
             // is stored beside it and added after the loop (a scatter inside the loop would keep
             // it from vectorising). The list is padded to whole vectors with k itself at weight 0
@@ -502,11 +510,59 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 wallStencilCell = cells.cellAt(k);
                 wallStencil = wallCells.stencilRanges(x[i]);
             }
-            wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
-                const double F = kernel.gradientFactor(std::sqrt(r2));
-                acceleration += fluidWallAcceleration<Pressure>(viscosity, r, r2, F, eta2, pOverRho2, rho[i], v[i], wall, w);
-                if constexpr (DensityRate) densityRate += mWall[w] * F * (v[i] - vWall[w]).dot(r);
-            });
+            if constexpr (lanes == 1) {
+                wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+                    const double F = kernel.gradientFactor(std::sqrt(r2));
+                    acceleration += fluidWallAcceleration<Pressure>(viscosity, r, r2, F, eta2, pOverRho2, rho[i], v[i], wall, w);
+                    if constexpr (DensityRate) densityRate += mWall[w] * F * (v[i] - vWall[w]).dot(r);
+                });
+            } else {
+                // As the fluid pairs: listed, padded with the first wall neighbour at weight 0, in lanes.
+                std::array<double, D> xi, vi{};
+                for (int d = 0; d < D; ++d) xi[d] = x[i][d];
+                if constexpr (ReadsVelocity)
+                    for (int d = 0; d < D; ++d) vi[d] = v[i][d];
+                const std::size_t count = listNeighbours(wallCells, wallStencil, xi, 0);
+                const std::size_t padded = (count + lanes - 1) / lanes * lanes;
+                for (std::size_t q = count; q < padded; ++q) neighbours[q] = neighbours[0];
+                const std::uint32_t* listed = neighbours.data();
+                const double* const xw = wallCells.sortedPosition(0).data();
+                const bool any = count > 0;  // then there are wall particles to point at
+                [[maybe_unused]] const double* const vw = any ? vWall[0].data() : nullptr;
+                [[maybe_unused]] const double* const viscousVw = Viscosity::enabled && any ? wall.viscousVelocity[0].data() : nullptr;
+                const double rhoI = rho[i];
+                double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateI = 0.0;
+#pragma omp simd reduction(+ : a0, a1, a2, densityRateI)
+                for (std::size_t q = 0; q < padded; ++q) {
+                    const std::size_t l = listed[q], w = wallCells.sortedIndex(l);
+                    double r[D];
+                    double r2 = 0.0, viwDotR = 0.0, vDotR = 0.0;
+#pragma GCC unroll 3
+                    for (int d = 0; d < D; ++d) {
+                        r[d] = xi[d] - xw[l * D + d];
+                        r[d] -= period[d] * std::nearbyint(r[d] * inversePeriod[d]);
+                        r2 += r[d] * r[d];
+                        if constexpr (Viscosity::enabled) viwDotR += (vi[d] - viscousVw[w * D + d]) * r[d];
+                        if constexpr (DensityRate) vDotR += (vi[d] - vw[w * D + d]) * r[d];
+                    }
+                    const double F = (q < count ? 1.0 : 0.0) * kernel.gradientFactor(std::sqrt(r2));
+                    double alongR = 0.0, alongV = 0.0;
+                    fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoI, mWall[w], wall.pressure[w], wall.density[w], alongR,
+                                               alongV);
+                    const auto component = [&](int d) {
+                        const double viw = Viscosity::enabled ? vi[d] - viscousVw[w * D + d] : 0.0;
+                        return alongR * r[d] + alongV * viw;
+                    };
+                    a0 += component(0);
+                    if constexpr (D > 1) a1 += component(1);
+                    if constexpr (D > 2) a2 += component(2);
+                    if constexpr (DensityRate) densityRateI += mWall[w] * F * vDotR;
+                }
+                acceleration[0] += a0;
+                if constexpr (D > 1) acceleration[1] += a1;
+                if constexpr (D > 2) acceleration[2] += a2;
+                densityRate += densityRateI;
+            }
             a[i] = acceleration;
             if constexpr (Continuity) drho[i] = densityRate;
         }

@@ -24,17 +24,28 @@ struct WallPairFields {
     const Vec<D>* viscousVelocity;  // read only by a viscous case
 };
 
+// The same terms as two numbers, alongR r + alongV (v_i - v~_w), from (v_i - v~_w).r and wall
+// particle w's mass, pressure and density: plain numbers, so a loop in vector lanes can use it.
+template <bool Pressure, class Viscosity>
+inline void fluidWallFactors(const Viscosity& viscosity, double viwDotR, double r2, double F, double eta2, double pOverRho2, double rhoFluid,
+                             double wallMass, double wallPressure, double wallDensity, double& alongR, double& alongV) {
+    alongR = 0.0;
+    alongV = 0.0;
+    if constexpr (Pressure) alongR -= wallMass * (pOverRho2 + wallPressure / (wallDensity * wallDensity)) * F;
+    if constexpr (Viscosity::enabled) {
+        const double factor = wallMass * viscosity.pairFactor(viwDotR, r2, 1.0 / (r2 + eta2), rhoFluid, wallDensity, F);
+        if constexpr (Viscosity::alongSeparation) alongR += factor;
+        else alongV += factor;
+    }
+}
+
 template <bool Pressure, class Viscosity, int D>
 inline Vec<D> fluidWallAcceleration(const Viscosity& viscosity, const Vec<D>& r, double r2, double F, double eta2, double pOverRho2, double rhoFluid,
                                     const Vec<D>& vFluid, const WallPairFields<D>& wall, std::size_t w) {
-    Vec<D> acceleration = Vec<D>::Zero();
-    if constexpr (Pressure) acceleration -= (wall.mass[w] * (pOverRho2 + wall.pressure[w] / (wall.density[w] * wall.density[w])) * F) * r;
-    if constexpr (Viscosity::enabled) {
-        const Vec<D> viw = vFluid - wall.viscousVelocity[w];
-        const double factor = viscosity.pairFactor(viw.dot(r), r2, 1.0 / (r2 + eta2), rhoFluid, wall.density[w], F);
-        acceleration += (wall.mass[w] * factor) * (Viscosity::alongSeparation ? r : viw);
-    }
-    return acceleration;
+    const Vec<D> viw = Viscosity::enabled ? Vec<D>(vFluid - wall.viscousVelocity[w]) : Vec<D>::Zero();
+    double alongR = 0.0, alongV = 0.0;
+    fluidWallFactors<Pressure>(viscosity, viw.dot(r), r2, F, eta2, pOverRho2, rhoFluid, wall.mass[w], wall.pressure[w], wall.density[w], alongR, alongV);
+    return alongR * r + alongV * viw;
 }
 
 }  // namespace sph

@@ -1,7 +1,8 @@
 // The symmetric pair loop (each fluid pair once, per-thread accumulators) against a direct
 // O(N^2) sum of every term written out here from the papers' formulas: a disordered block of
 // fluid with random velocities and densities, pressure + continuity + artificial viscosity +
-// Fourtakas diffusion (its series and its std::pow form), in 2D and 3D, with one and two threads.
+// Fourtakas diffusion (its series and its std::pow form), and the terms of two layers of wall
+// particles under it, in 2D and 3D, with one and two threads.
 #include "physics/FluidSystem.hpp"
 
 #include <gtest/gtest.h>
@@ -45,6 +46,27 @@ ParticleSet<D> disorderedBlock(const Scene<D>& s, unsigned seed) {
     return fluid;
 }
 
+// Two layers of wall particles under the block (last coordinate -dx/2 and -3dx/2).
+template <int D>
+ParticleSet<D> wallLayers(const Scene<D>& s) {
+    ParticleSet<D> walls("walls");
+    std::size_t perLayer = 1;
+    for (int d = 0; d + 1 < D; ++d) perLayer *= static_cast<std::size_t>(s.perSide);
+    walls.resize(2 * perLayer);
+    auto& m = walls.addScalar("mass", s.rho0 * std::pow(s.dx, D));
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+        std::size_t rest = w % perLayer;
+        for (int d = 0; d + 1 < D; ++d) {
+            walls.position[w][d] = (static_cast<double>(rest % static_cast<std::size_t>(s.perSide)) + 0.5) * s.dx;
+            rest /= static_cast<std::size_t>(s.perSide);
+        }
+        walls.position[w][D - 1] = -(0.5 + static_cast<double>(w / perLayer)) * s.dx;
+        m[w] *= 1.0 + 0.1 * static_cast<double>(w % 3);
+        walls.globalId[w] = static_cast<std::int64_t>(w);
+    }
+    return walls;
+}
+
 template <int D>
 void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0) {
     Scene<D> s;
@@ -53,10 +75,20 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0) {
     const TaitEquationOfState eos(s.rho0, s.c0, s.gamma, 0.0);
     FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0),
                           Fourtakas2019<D>(s.delta, s.h, s.c0, s.rho0, eos.B, s.gamma), DensityFormulation::Continuity};
-    ParticleSet<D> walls("walls");
-    walls.addScalar("mass", 0.0);
-    FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), std::move(walls), {}, Vec<D>::Constant(-0.1),
-                          Vec<D>::Constant(s.perSide * s.dx + 0.1), s.gravity, 0.0);
+    FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), wallLayers(s), {}, Vec<D>::Constant(-0.1), Vec<D>::Constant(s.perSide * s.dx + 0.1),
+                          s.gravity, 0.0);
+    // Wall particles with their own pressure, density, velocity and viscous velocity (no
+    // boundary model here sets them).
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (std::size_t w = 0; w < system.walls.size(); ++w) {
+        system.walls.scalar("pressure")[w] = 2000.0 * (1.0 + unit(random));
+        system.walls.scalar("density")[w] = s.rho0 * (1.0 + 0.01 * unit(random));
+        for (int d = 0; d < D; ++d) {
+            system.walls.vector("velocity")[w][d] = 0.2 * unit(random);
+            system.walls.vector("viscousVelocity")[w][d] = 0.5 * unit(random);
+        }
+    }
     omp_set_num_threads(threads);
     system.evaluateRates(1.0);
     omp_set_num_threads(omp_get_num_procs());
@@ -88,6 +120,21 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0) {
             // Fourtakas et al. (2019): rho^H_ji = rho0 [(1 - rho0 g.r_ij / B)^(1/gamma) - 1]
             const double hydrostatic = s.rho0 * (std::pow(1.0 - s.rho0 * s.gravity.dot(r) / eos.B, 1.0 / s.gamma) - 1.0);
             drho += 2.0 * s.delta * s.h * s.c0 * ((rho[i] - rho[j]) + hydrostatic) * r.dot(gradW) / (r.squaredNorm() + eta2) * m[j] / rho[j];
+        }
+        const auto& walls = system.walls;
+        for (std::size_t w = 0; w < walls.size(); ++w) {  // pressure, viscosity and continuity; no diffusion
+            const Vec<D> r = x[i] - walls.position[w];
+            const double distance = r.norm();
+            if (distance >= radius) continue;
+            const Vec<D> gradW = kernel.gradientFactor(distance) * r;
+            const double mw = walls.scalar("mass")[w], pw = walls.scalar("pressure")[w], rhow = walls.scalar("density")[w];
+            a -= mw * (pi / (rho[i] * rho[i]) + pw / (rhow * rhow)) * gradW;
+            const double vr = (v[i] - walls.vector("viscousVelocity")[w]).dot(r);
+            if (vr < 0.0) {
+                const double mu = s.h * vr / (r.squaredNorm() + eta2);
+                a -= mw * (-s.alpha * s.c0 * mu / (0.5 * (rho[i] + rhow))) * gradW;
+            }
+            drho += mw * (v[i] - walls.vector("velocity")[w]).dot(gradW);
         }
         worstAcceleration = std::max(worstAcceleration, (system.fluid.vector("acceleration")[i] - a).norm());
         worstRate = std::max(worstRate, std::abs(system.fluid.scalar("densityRate")[i] - drho));
