@@ -308,7 +308,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     constexpr std::size_t chunk = 256;
     // Pairs in vector lanes (AVX2: four doubles) where a particle has many: 87 pairs in the 3D
     // benchmark, 1.5x faster. With 12 (2D), the loop over them in lanes, its padding and the
-    // separate scatter cost 10-15 % more than one fused scalar loop, which 2D keeps.
+    // separate scatter cost 5-15 % more than one fused scalar loop, which 2D keeps.
     constexpr std::size_t lanes = D == 3 ? 4 : 1;
     ordered.mass.resize(n);
     if constexpr (Pressure) ordered.pressureOverDensity2.resize(n);
