@@ -301,6 +301,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     const std::array<double, D> period = cells.periods();
     std::array<double, D> inversePeriod{};
     for (int d = 0; d < D; ++d) inversePeriod[d] = period[d] > 0.0 ? 1.0 / period[d] : 0.0;
+    const bool anyPeriodic = std::any_of(period.begin(), period.end(), [](double length) { return length > 0.0; });
     const double eta2 = viscousRegularisation(s.smoothingLength());
     const auto& wallCells = s.wallCells();
 
@@ -361,33 +362,28 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
         const auto listNeighbours = [&](const CellLinkedList<D>& list, const typename CellLinkedList<D>::StencilRanges& around,
                                         const std::array<double, D>& x, std::size_t first) {
             const double* const positions = list.sortedPosition(0).data();  // readable even for an empty list
-            const auto distance2To = [&](std::size_t l) {
-                double r2 = 0.0;
+            // Two versions of the loop over a range's candidates: without periodic directions
+            // (a constant of the case, so the branch between them is always predicted) a
+            // candidate costs a third fewer instructions.
+            const auto listRange = [&]<bool Wraps>(std::size_t begin, std::size_t end, std::size_t count) {
+                const auto distance2To = [&](std::size_t l) {
+                    double r2 = 0.0;
 #pragma GCC unroll 3
-                for (int d = 0; d < D; ++d) {
-                    double r = x[d] - positions[l * D + d];
-                    r -= period[d] * std::nearbyint(r * inversePeriod[d]);
-                    r2 += r * r;
-                }
-                return r2;
-            };
-            std::size_t count = 0;
-            for (const auto& range : around) {
-                const std::size_t begin = std::max<std::size_t>(range.begin, first);
-                if (begin >= range.end) continue;
-                const std::size_t candidates = range.end - begin;
-                if (neighbours.size() < count + candidates + lanes) {
-                    neighbours.resize(2 * (count + candidates + lanes));
-                    if constexpr (lanes > 1) toNeighbour.resize(neighbours.size() * (D + 1));
-                }
+                    for (int d = 0; d < D; ++d) {
+                        double r = x[d] - positions[l * D + d];
+                        if constexpr (Wraps) r -= period[d] * std::nearbyint(r * inversePeriod[d]);
+                        r2 += r * r;
+                    }
+                    return r2;
+                };
                 if constexpr (lanes == 1) {
-                    for (std::size_t l = begin; l < range.end; ++l) {
+                    for (std::size_t l = begin; l < end; ++l) {
                         neighbours[count] = static_cast<std::uint32_t>(l);
                         count += distance2To(l) < radius2;
                     }
                 } else {
                     // Whole vectors: the cell list keeps positions readable past its last place.
-                    const std::size_t inLanes = (candidates + lanes - 1) / lanes * lanes;
+                    const std::size_t candidates = end - begin, inLanes = (candidates + lanes - 1) / lanes * lanes;
                     static_assert(CellLinkedList<D>::readablePastEnd >= lanes - 1);
                     if (distance2.size() < inLanes) distance2.resize(2 * inLanes);
                     double* const r2s = distance2.data();
@@ -398,6 +394,19 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                         count += r2s[c] < radius2;
                     }
                 }
+                return count;
+            };
+            std::size_t count = 0;
+            for (const auto& range : around) {
+                const std::size_t begin = std::max<std::size_t>(range.begin, first);
+                if (begin >= range.end) continue;
+                const std::size_t candidates = range.end - begin;
+                if (neighbours.size() < count + candidates + lanes) {
+                    neighbours.resize(2 * (count + candidates + lanes));
+                    if constexpr (lanes > 1) toNeighbour.resize(neighbours.size() * (D + 1));
+                }
+                count = anyPeriodic ? listRange.template operator()<true>(begin, range.end, count)
+                                    : listRange.template operator()<false>(begin, range.end, count);
             }
             return count;
         };
