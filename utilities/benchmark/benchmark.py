@@ -7,17 +7,21 @@ itself, without start-up; the case writes only at its end time, and that write (
 "output" part) is left out of the rate.
 
 Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
-                                         [--factors 2 1 0.5] [--end-time T]
+                                         [--factors 2 1 0.5] [--end-time T] [--repeat N]
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
 Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
 fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
 wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
 box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
+--repeat runs each configuration N times, the thread counts taking turns so that a slow spell of
+a shared machine falls on all of them, and reports the median time loop with the fastest and
+the slowest.
 """
 import argparse
 import os
 import re
 import shutil
+import statistics
 import subprocess
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -74,8 +78,7 @@ def run(directory, threads, end_time=None):
     output = float(re.search(r"^\s+output\s+([0-9.]+) s", log, re.M).group(1))
     timed = wall - output
     peak = usage.ru_maxrss * 1024  # bytes (Linux reports kB)
-    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "rate": steps * fluid / timed,
-            "rateAll": steps * (fluid + walls) / timed, "peak": peak}
+    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak}
 
 
 def main():
@@ -85,19 +88,29 @@ def main():
     parser.add_argument("--scaling", action="store_true", help="also at 4x fewer and 4x more particles (2D: spacing x2, x0.5)")
     parser.add_argument("--factors", type=float, nargs="+", help="spacing factors to run (default 1, or 2 1 0.5 with --scaling)")
     parser.add_argument("--end-time", type=float, help="simulated time of each run (default: the case's endTime)")
+    parser.add_argument("--repeat", type=int, default=1, help="runs per configuration; the table gives the median (default 1)")
     args = parser.parse_args()
+    if args.repeat < 1:
+        raise SystemExit("benchmark: --repeat must be at least 1, not %d" % args.repeat)
     factors = args.factors or ([2.0, 1.0, 0.5] if args.scaling else [1.0])
-    print("| case | fluid + wall particles | threads | steps | time loop [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| case | fluid + wall particles | threads | steps | time loop [s] | runs [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     peaks = []
     for factor in factors:
         directory = prepare(args.case, factor)
+        runs = {threads: [] for threads in args.threads}
+        for _ in range(args.repeat):
+            for threads in args.threads:
+                runs[threads].append(run(directory, threads, args.end_time))
         for threads in args.threads:
-            r = run(directory, threads, args.end_time)
-            peaks.append((r["fluid"] + r["walls"], r["peak"]))
-            print("| %s dx x%g | %d + %d | %d | %d | %.1f | %.3g | %.3g | %.0f MB | %.0f |" % (
-                args.case, factor, r["fluid"], r["walls"], threads, r["steps"], r["wall"], r["rate"], r["rateAll"], r["peak"] / 1e6,
-                r["peak"] / (r["fluid"] + r["walls"])), flush=True)
+            times = sorted(r["wall"] for r in runs[threads])
+            median = statistics.median(times)
+            peak = max(r["peak"] for r in runs[threads])
+            r = runs[threads][0]  # particles and steps are the same in every run
+            peaks.append((r["fluid"] + r["walls"], peak))
+            print("| %s dx x%g | %d + %d | %d | %d | %.3g | %.3g-%.3g | %.3g | %.3g | %.0f MB | %.0f |" % (
+                args.case, factor, r["fluid"], r["walls"], threads, r["steps"], median, times[0], times[-1], r["steps"] * r["fluid"] / median,
+                r["steps"] * (r["fluid"] + r["walls"]) / median, peak / 1e6, peak / (r["fluid"] + r["walls"])), flush=True)
     if len(peaks) > 1 and max(peaks)[0] > min(peaks)[0]:
         # The peak includes the libraries and buffers any run has: the difference isolates what a particle costs.
         (small, peakSmall), (large, peakLarge) = min(peaks), max(peaks)
