@@ -282,6 +282,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     constexpr bool Diffuses = DensityRate && Diffusion::enabled;
     constexpr bool ReadsVelocity = DensityRate || Viscosity::enabled;
     constexpr bool ReadsDensity = Viscosity::enabled || Diffuses;
+    constexpr bool AlongVelocity = actsAlongVelocity<Viscosity>;
     const auto& cells = s.fluidCells();
     const std::size_t n = cells.pointCount();
     const std::size_t owned = s.fluid.ownedCount();
@@ -464,7 +465,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                     else alongV += factor;
                 }
                 const auto accumulate = [&](int d, double& sum) {
-                    const double perMass = alongR * r[d] + alongV * vkl[d];
+                    double perMass = alongR * r[d];
+                    if constexpr (AlongVelocity) perMass += alongV * vkl[d];
                     sum += mK[l] * perMass;
                     if constexpr (lanes > 1) toL[d * stride + q] = -mKk * perMass;
                     else as[l * D + d] -= mKk * perMass;
@@ -559,8 +561,9 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                     fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoI, mWall[w], wall.pressure[w], wall.density[w], alongR,
                                                alongV);
                     const auto component = [&](int d) {
-                        const double viw = Viscosity::enabled ? vi[d] - viscousVw[w * D + d] : 0.0;
-                        return alongR * r[d] + alongV * viw;
+                        double component = alongR * r[d];
+                        if constexpr (AlongVelocity) component += alongV * (vi[d] - viscousVw[w * D + d]);
+                        return component;
                     };
                     a0 += component(0);
                     if constexpr (D > 1) a1 += component(1);

@@ -16,6 +16,14 @@ namespace sph {
 // eta^2 = 0.01 h^2 keeps the viscous 1/r^2 finite (Monaghan 1992).
 inline double viscousRegularisation(double smoothingLength) { return 0.01 * smoothingLength * smoothingLength; }
 
+// Whether a viscosity adds a term along the relative velocity (Morris) rather than along r: only
+// then does a pair loop evaluate one; with any other it is left out, not multiplied by zero.
+template <class Viscosity>
+inline constexpr bool actsAlongVelocity = [] {
+    if constexpr (Viscosity::enabled) return !Viscosity::alongSeparation;
+    else return false;
+}();
+
 template <int D>
 struct WallPairFields {
     const double* mass;
@@ -43,9 +51,11 @@ template <bool Pressure, class Viscosity, int D>
 inline Vec<D> fluidWallAcceleration(const Viscosity& viscosity, const Vec<D>& r, double r2, double F, double eta2, double pOverRho2, double rhoFluid,
                                     const Vec<D>& vFluid, const WallPairFields<D>& wall, std::size_t w) {
     const Vec<D> viw = Viscosity::enabled ? Vec<D>(vFluid - wall.viscousVelocity[w]) : Vec<D>::Zero();
+    const double viwDotR = Viscosity::enabled ? viw.dot(r) : 0.0;
     double alongR = 0.0, alongV = 0.0;
-    fluidWallFactors<Pressure>(viscosity, viw.dot(r), r2, F, eta2, pOverRho2, rhoFluid, wall.mass[w], wall.pressure[w], wall.density[w], alongR, alongV);
-    return alongR * r + alongV * viw;
+    fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoFluid, wall.mass[w], wall.pressure[w], wall.density[w], alongR, alongV);
+    if constexpr (actsAlongVelocity<Viscosity>) return alongR * r + alongV * viw;
+    else return alongR * r;
 }
 
 }  // namespace sph
