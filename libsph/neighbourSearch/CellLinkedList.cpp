@@ -20,6 +20,8 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
             if (n < 2 * reach + 1)  // else a query would meet a cell twice
                 throw std::invalid_argument("cell-linked list: a periodic direction must be at least 2.5 support radii long");
             anyPeriodic_ = true;
+            period_[dd] = extent;
+            inversePeriod_[dd] = 1.0 / extent;
         }
         dims_[dd] = n;
         inverseCellSizes_[d] = periodic_[dd] ? n / extent : 1.0 / cellSize;

@@ -65,19 +65,67 @@ public:
         }
     }
 
+    // Lists in `out` the places from `first` on in the stencil's ranges whose points lie within
+    // sqrt(radius2) of x, and returns how many. No branch per candidate (a third of them are
+    // neighbours: a branch would be mispredicted often). Lanes > 1: the squared distances of a
+    // range come first, in whole vectors, in `scratch`. `out` keeps room for Lanes places past
+    // the last listed, to pad with. Wraps: the nearest image's separation; without it a candidate
+    // costs a third fewer instructions, so that callers pick the version once (anyPeriodic()).
+    template <std::size_t Lanes, bool Wraps>
+    std::size_t listWithin(const StencilRanges& stencil, const std::array<double, D>& x, double radius2, std::size_t first,
+                           std::vector<std::uint32_t>& out, std::vector<double>& scratch) const {
+        const double* const positions = sortedPosition_.data()->data();  // readable even for an empty list
+        const auto distance2To = [&](std::size_t l) {
+            double r2 = 0.0;
+#pragma GCC unroll 3
+            for (int d = 0; d < D; ++d) {
+                const double r = separation<Wraps>(x[d] - positions[l * D + d], d);
+                r2 += r * r;
+            }
+            return r2;
+        };
+        std::size_t count = 0;
+        for (const Range& range : stencil) {
+            const std::size_t begin = std::max<std::size_t>(range.begin, first);
+            if (begin >= range.end) continue;
+            const std::size_t candidates = range.end - begin;
+            if (out.size() < count + candidates + Lanes) out.resize(2 * (count + candidates + Lanes));
+            if constexpr (Lanes == 1) {
+                for (std::size_t l = begin; l < range.end; ++l) {
+                    out[count] = static_cast<std::uint32_t>(l);
+                    count += distance2To(l) < radius2;
+                }
+            } else {
+                // Whole vectors: positions are readable past the last place.
+                static_assert(readablePastEnd >= Lanes - 1);
+                const std::size_t inLanes = (candidates + Lanes - 1) / Lanes * Lanes;
+                if (scratch.size() < inLanes) scratch.resize(2 * inLanes);
+                double* const r2s = scratch.data();
+#pragma omp simd
+                for (std::size_t c = 0; c < inLanes; ++c) r2s[c] = distance2To(begin + c);
+                for (std::size_t c = 0; c < candidates; ++c) {
+                    out[count] = static_cast<std::uint32_t>(begin + c);
+                    count += r2s[c] < radius2;
+                }
+            }
+        }
+        return count;
+    }
+    bool anyPeriodic() const { return anyPeriodic_; }
+    // The separation r along direction d, or with Wraps its nearest image's: r - L nearbyint(r / L)
+    // with L the period (1/L taken as 0 where not periodic, so that there is no branch).
+    template <bool Wraps>
+    double separation(double r, int d) const {
+        if constexpr (Wraps) r -= period_[d] * std::nearbyint(r * inversePeriod_[d]);
+        return r;
+    }
+
     // Positions in cell order (of the last build); each pair once: the neighbours of place k
     // at later places l are those of stencilRanges(sortedPosition(k)) with l > k. Places up to
     // readablePastEnd beyond the last hold zeros, so that a loop in vector lanes may read whole
     // vectors past the end of any range.
     static constexpr std::size_t readablePastEnd = 7;
     const Vec<D>& sortedPosition(std::size_t k) const { return sortedPosition_[k]; }
-    // Per direction, the period L, 0 where not periodic: r - L nearbyint(r / L) (with 1/L taken
-    // as 0 there) is then the nearest image's separation with no branch.
-    std::array<double, D> periods() const {
-        std::array<double, D> lengths{};
-        for (int d = 0; d < D; ++d) lengths[static_cast<std::size_t>(d)] = periodic_[static_cast<std::size_t>(d)] ? extent_[d] : 0.0;
-        return lengths;
-    }
 
     // The points in cell order: place k holds point sortedIndex(k).
     std::size_t pointCount() const { return sorted_.size(); }
@@ -118,6 +166,7 @@ private:
     std::array<int, D> dims_;
     std::array<bool, D> periodic_;
     bool anyPeriodic_ = false;
+    std::array<double, D> period_{}, inversePeriod_{};  // 0 where not periodic
     std::vector<std::uint32_t> cellStart_;  // size cells + 1
     std::vector<std::uint32_t> sorted_;     // cell order -> point index
     std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries

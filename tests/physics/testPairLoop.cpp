@@ -5,6 +5,8 @@
 // particles under it, in 2D and 3D, with one and two threads, with and without a periodic side.
 #include "physics/FluidSystem.hpp"
 
+#include "support/BlockDomain.hpp"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -73,13 +75,7 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     Scene<D> s;
     s.c0 = c0;
     const double period = s.perSide * s.dx;
-    Vec<D> domainMin = Vec<D>::Constant(-0.1), domainMax = Vec<D>::Constant(period + 0.1);
-    std::array<bool, D> periodic{};
-    if (periodicX) {
-        domainMin[0] = 0.0;
-        domainMax[0] = period;
-        periodic[0] = true;
-    }
+    const auto domain = test::blockDomain<D>(period, periodicX);
     const auto separation = [&](const Vec<D>& a, const Vec<D>& b) {
         Vec<D> r = a - b;
         if (periodicX) r[0] -= period * std::round(r[0] / period);
@@ -89,7 +85,7 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     const TaitEquationOfState eos(s.rho0, s.c0, s.gamma, 0.0);
     FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0),
                           Fourtakas2019<D>(s.delta, s.h, s.c0, s.rho0, eos.B, s.gamma), DensityFormulation::Continuity};
-    FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), wallLayers(s), {}, domainMin, domainMax, s.gravity, 0.0, periodic);
+    FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), wallLayers(s), {}, domain.min, domain.max, s.gravity, 0.0, domain.periodic);
     // Wall particles with their own pressure, density, velocity and viscous velocity (no
     // boundary model here sets them).
     std::mt19937 random(5);
