@@ -32,11 +32,13 @@ void ParticleSet<D>::resize(std::size_t owned) {
     for (auto& [name, f] : integers_) f.values.resize(owned, 0);
 }
 
-// Adds a field of `initial` values, or returns the existing one (written if either asks).
+// Adds a field of `initial` values, or returns the existing one (written if either asks). The
+// values are made only for a new field: an integrator asks for its fields every step.
 template <class Map, class T>
 auto& addField(Map& fields, const std::string& field, std::size_t size, const T& initial, bool written) {
-    auto [it, inserted] = fields.try_emplace(field, typename Map::mapped_type{std::vector<T>(size, initial), written});
-    if (!inserted) it->second.written = it->second.written || written;
+    auto it = fields.find(field);
+    if (it == fields.end()) return fields.emplace(field, typename Map::mapped_type{std::vector<T>(size, initial), written}).first->second.values;
+    it->second.written = it->second.written || written;
     return it->second.values;
 }
 
