@@ -1,7 +1,10 @@
 #include "neighbourSearch/CellLinkedList.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace sph {
 
@@ -30,26 +33,77 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
     cellStart_.assign(cells + 1, 0);
 }
 
+namespace {
+
+// The share [first, last) of `count` items that thread `thread` of `team` takes.
+std::pair<std::size_t, std::size_t> shareOf(std::size_t count, int thread, int team) {
+    const auto t = static_cast<std::size_t>(thread), threads = static_cast<std::size_t>(team);
+    return {count * t / threads, count * (t + 1) / threads};
+}
+
+}  // namespace
+
+// A counting sort, in parallel by destination: each thread counts, then places, the points of
+// its own range of cells, reading every point's cell (4 bytes) but moving only its own points.
+// The order is the serial sort's whatever the number of threads (runs stay reproducible bit for
+// bit), and no array per thread and cell is summed across threads (in 2D there are more cells
+// than points).
 template <int D>
 void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
-    const std::size_t n = end - begin;
-    std::vector<std::uint32_t> cellOf(n);
-    std::fill(cellStart_.begin(), cellStart_.end(), 0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) cellOf[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
-    for (std::size_t k = 0; k < n; ++k) ++cellStart_[cellOf[k] + 1];
-    for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+    const std::size_t n = end - begin, cells = cellCount();
+    cellOf_.resize(n);
+    nextPlace_.resize(cells);
     sorted_.resize(n);
     sortedPosition_.resize(n + readablePastEnd);
     std::fill(sortedPosition_.begin() + static_cast<std::ptrdiff_t>(n), sortedPosition_.end(), Vec<D>::Zero());
     sortedCell_.resize(n);
-    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::uint32_t place = fill[cellOf[k]]++;
-        sorted_[place] = static_cast<std::uint32_t>(begin + k);
-        sortedPosition_[place] = points[begin + k];
-        sortedCell_[place] = cellOf[k];
+#pragma omp parallel
+    {
+        const int team = omp_get_num_threads(), thread = omp_get_thread_num();
+#pragma omp single
+        threadTotals_.resize(static_cast<std::size_t>(team));  // implicit barrier
+#pragma omp for schedule(static)
+        for (std::size_t k = 0; k < n; ++k) cellOf_[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
+        // Each cell's count, then each range's starts from the earlier ranges' totals.
+        const auto [firstCell, lastCell] = shareOf(cells, thread, team);
+        std::fill(nextPlace_.begin() + static_cast<std::ptrdiff_t>(firstCell), nextPlace_.begin() + static_cast<std::ptrdiff_t>(lastCell), 0);
+        std::uint32_t total = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint32_t c = cellOf_[k];
+            if (c >= firstCell && c < lastCell) {
+                ++nextPlace_[c];
+                ++total;
+            }
+        }
+        threadTotals_[static_cast<std::size_t>(thread)] = total;
+#pragma omp barrier
+        std::uint32_t start = 0;
+        for (int t = 0; t < thread; ++t) start += threadTotals_[static_cast<std::size_t>(t)];
+        for (std::size_t c = firstCell; c < lastCell; ++c) {
+            const std::uint32_t count = nextPlace_[c];
+            cellStart_[c] = start;
+            nextPlace_[c] = start;
+            start += count;
+        }
+#pragma omp barrier
+        // Placing splits the cells anew, by the places they fill, so that threads move as many points.
+        const auto [firstPlace, lastPlace] = shareOf(n, thread, team);
+        const auto cellsStartingBy = [&](std::size_t place) {
+            return static_cast<std::size_t>(std::upper_bound(cellStart_.begin(), cellStart_.end() - 1, place) - cellStart_.begin());
+        };
+        const std::size_t placingFrom = thread == 0 ? 0 : cellsStartingBy(firstPlace);
+        const std::size_t placingTo = thread == team - 1 ? cells : cellsStartingBy(lastPlace);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint32_t c = cellOf_[k];
+            if (c >= placingFrom && c < placingTo) {
+                const std::uint32_t place = nextPlace_[c]++;
+                sorted_[place] = static_cast<std::uint32_t>(begin + k);
+                sortedPosition_[place] = points[begin + k];
+                sortedCell_[place] = c;
+            }
+        }
     }
+    cellStart_[cells] = static_cast<std::uint32_t>(n);
 }
 
 template <int D>

@@ -171,6 +171,10 @@ private:
     std::vector<std::uint32_t> sorted_;     // cell order -> point index
     std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries
     std::vector<std::uint32_t> sortedCell_;  // cell of each place
+    // Scratch of build, kept so as not to allocate it again every step.
+    std::vector<std::uint32_t> cellOf_;        // cell of each point
+    std::vector<std::uint32_t> nextPlace_;     // per cell: its count, then its next place
+    std::vector<std::uint32_t> threadTotals_;  // per thread: the points in its range of cells
 };
 
 }  // namespace sph

@@ -1,8 +1,10 @@
 #include "neighbourSearch/CellLinkedList.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
+#include <numeric>
 #include <random>
 
 namespace {
@@ -61,6 +63,44 @@ TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
     // Cells half the search radius wide: 20 x 20.
     const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<int>(p.y() * 20) * 20 + static_cast<int>(p.x() * 20); };
     for (std::size_t k = 1; k < order.size(); ++k) EXPECT_LE(cellOf(points[order[k - 1]]), cellOf(points[order[k]]));
+}
+
+TEST(CellLinkedList, OrderIsTheStableSortsWhateverTheNumberOfThreads) {
+    // Crowded cells beside empty ones, and only points [100, 1950) listed.
+    std::mt19937 random(11);
+    std::normal_distribution<double> coordinate(0.3, 0.1);
+    std::vector<sph::Vec<2>> points(2000);
+    for (auto& p : points) p = {std::clamp(coordinate(random), 0.0, 0.999), std::clamp(coordinate(random), 0.0, 0.999)};
+    const std::size_t begin = 100, end = 1950;
+    const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<std::uint32_t>(p.y() * 20) * 20 + static_cast<std::uint32_t>(p.x() * 20); };
+    std::vector<std::uint32_t> expected(end - begin);
+    std::iota(expected.begin(), expected.end(), static_cast<std::uint32_t>(begin));
+    std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t i, std::uint32_t j) { return cellOf(points[i]) < cellOf(points[j]); });
+    struct RestoreThreads {
+        int threads = omp_get_max_threads();
+        ~RestoreThreads() { omp_set_num_threads(threads); }
+    } restore;  // also when an assertion returns early
+    for (const int threads : {1, 2, 3, 7}) {
+        omp_set_num_threads(threads);
+        sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
+        cells.build(points, begin, end);
+        ASSERT_EQ(cells.pointCount(), expected.size());
+        for (std::size_t k = 0; k < expected.size(); ++k) {
+            ASSERT_EQ(cells.sortedIndex(k), expected[k]) << threads << " threads, place " << k;
+            ASSERT_EQ(cells.cellAt(k), cellOf(points[expected[k]]));
+            ASSERT_EQ(cells.sortedPosition(k), points[expected[k]]);
+        }
+        // The cells' starts: a point's stencil finds exactly the listed points within the radius.
+        const sph::Vec<2> x(0.31, 0.28);
+        std::size_t found = 0, within = 0;
+        cells.forEachNeighbour(x, 0.1, [&](std::uint32_t j, const sph::Vec<2>&, double) {
+            EXPECT_TRUE(j >= begin && j < end);
+            ++found;
+        });
+        for (std::size_t j = begin; j < end; ++j) within += (points[j] - x).squaredNorm() < 0.01;
+        EXPECT_EQ(found, within);
+        EXPECT_GT(within, 100u);
+    }
 }
 
 TEST(CellLinkedList, PeriodicDirectionsFindNearestImages) {
