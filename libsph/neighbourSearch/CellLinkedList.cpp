@@ -93,13 +93,20 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         };
         const std::size_t placingFrom = thread == 0 ? 0 : cellsStartingBy(firstPlace);
         const std::size_t placingTo = thread == team - 1 ? cells : cellsStartingBy(lastPlace);
+        // Plain pointers: a store through a member's data would make the compiler reload the others.
+        const std::uint32_t* const cellOf = cellOf_.data();
+        std::uint32_t* const nextPlace = nextPlace_.data();
+        std::uint32_t* const sorted = sorted_.data();
+        std::uint32_t* const sortedCell = sortedCell_.data();
+        Vec<D>* const sortedPosition = sortedPosition_.data();
+        const Vec<D>* const from = points.data() + begin;
         for (std::size_t k = 0; k < n; ++k) {
-            const std::uint32_t c = cellOf_[k];
+            const std::uint32_t c = cellOf[k];
             if (c >= placingFrom && c < placingTo) {
-                const std::uint32_t place = nextPlace_[c]++;
-                sorted_[place] = static_cast<std::uint32_t>(begin + k);
-                sortedPosition_[place] = points[begin + k];
-                sortedCell_[place] = c;
+                const std::uint32_t place = nextPlace[c]++;
+                sorted[place] = static_cast<std::uint32_t>(begin + k);
+                sortedPosition[place] = from[k];
+                sortedCell[place] = c;
             }
         }
     }
