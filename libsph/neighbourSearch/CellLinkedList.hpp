@@ -136,8 +136,7 @@ public:
 
     // Shortest separation vector under the periodic directions.
     void nearestImage(Vec<D>& r) const {
-        for (int d = 0; d < D; ++d)
-            if (periodic_[static_cast<std::size_t>(d)]) r[d] -= extent_[d] * std::round(r[d] / extent_[d]);
+        for (int d = 0; d < D; ++d) r[d] = separation<true>(r[d], d);
     }
 
     std::size_t cellCount() const { return cellStart_.size() - 1; }

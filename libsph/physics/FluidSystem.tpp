@@ -464,7 +464,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
 
         auto wallStencilCell = std::numeric_limits<std::uint32_t>::max();
         typename CellLinkedList<D>::StencilRanges wallStencil;
-        withWraps([&]([[maybe_unused]] auto wraps) {
+        const auto wallPass = [&]([[maybe_unused]] auto wraps) {
 #pragma omp for schedule(static, chunk)
             for (std::size_t k = 0; k < n; ++k) {
                 const std::size_t i = cells.sortedIndex(k);
@@ -536,7 +536,10 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 a[i] = acceleration;
                 if constexpr (Continuity) drho[i] = densityRate;
             }
-        });
+        };
+        // The scalar pass's forEachNeighbour takes the nearest image itself: one version is enough.
+        if constexpr (lanes == 1) wallPass(std::false_type{});
+        else withWraps(wallPass);
     }
 }
 
