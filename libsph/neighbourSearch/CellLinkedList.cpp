@@ -10,12 +10,12 @@ namespace sph {
 
 template <int D>
 CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double radius, const std::array<bool, D>& periodic)
-    : lower_(lower), extent_(upper - lower), periodic_(periodic) {
+    : lower_(lower), periodic_(periodic) {
     const double cellSize = radius / reach;
     std::size_t cells = 1;
     for (int d = 0; d < D; ++d) {
         const auto dd = static_cast<std::size_t>(d);
-        const double extent = extent_[d];
+        const double extent = upper[d] - lower[d];
         if (!(extent > 0.0)) throw std::invalid_argument("cell-linked list: empty domain");
         int n = std::max(1, static_cast<int>(std::ceil(extent / cellSize)));
         if (periodic_[dd]) {

@@ -1,8 +1,8 @@
 // Cell-linked list: a uniform grid of cells half the search radius wide, filled by a counting
-// sort (O(N)). A query visits the 5^D cells around a point, which hug the search sphere more
-// closely than 3^D cells a radius wide (1.4x fewer candidates in 2D, 1.7x in 3D); in each row
-// the five cells are consecutive, so a row is one contiguous range of the cell order. Periodic
-// directions wrap the cells and report the nearest image's separation.
+// sort (O(N + cells), in parallel). A query visits the 5^D cells around a point, which hug the
+// search sphere more closely than 3^D cells a radius wide (1.4x fewer candidates in 2D, 1.7x in
+// 3D); in each row the five cells are consecutive, so a row is one contiguous range of the cell
+// order. Periodic directions wrap the cells and report the nearest image's separation.
 #pragma once
 
 #include "core/Vector.hpp"
@@ -160,7 +160,6 @@ private:
     }
 
     Vec<D> lower_;
-    Vec<D> extent_;
     Vec<D> inverseCellSizes_;  // per direction: a periodic direction stretches its cells to fit
     std::array<int, D> dims_;
     std::array<bool, D> periodic_;
