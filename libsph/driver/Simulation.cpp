@@ -1,5 +1,6 @@
 #include "driver/Simulation.hpp"
 
+#include "driver/BlowUpCheck.hpp"
 #include "driver/CaseDirectory.hpp"
 #include "driver/FluidSetup.hpp"
 #include "driver/Progress.hpp"
@@ -84,32 +85,6 @@ void reportErrorAgainstCost(const std::vector<FunctionObjectEntry<D>>& functionO
     writeTextAtomically(directory / "summary.csv", csv);
 }
 
-// A blown-up run stops with the step, time, particle and quantity.
-template <int D>
-void checkState(const FluidSystem<D>& system, long step, double t, double rho0) {
-    const auto& x = system.fluid.position;
-    const auto& v = system.fluid.vector("velocity");
-    const auto& rho = system.fluid.scalar("density");
-    const Vec<D>& lo = system.domainMin();
-    const Vec<D>& hi = system.domainMax();
-    // Weakly compressible flow is meaningless past Mach 1: a faster particle has blown up.
-    const double c0 = std::visit([](const auto& e) { return e.c0; }, system.models().eos);
-    const auto stop = [&](std::size_t i, const std::string& what) {
-        throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
-                                     "    The last written time is kept; reduce the time step (courant) or check the case.",
-                                     step, t, system.fluid.globalId[i], fmt::join(x[i], " "), what));
-    };
-    for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) {
-        if (!x[i].allFinite()) stop(i, "has a non-finite position");
-        if (!v[i].allFinite()) stop(i, "has a non-finite velocity");
-        if (v[i].squaredNorm() > c0 * c0) stop(i, fmt::format("moves at {:g}, faster than the speed of sound c0 = {:g}", v[i].norm(), c0));
-        if (!std::isfinite(rho[i]) || rho[i] < 0.5 * rho0 || rho[i] > 2.0 * rho0)
-            stop(i, fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0));
-        if ((x[i].array() < lo.array()).any() || (x[i].array() > hi.array()).any())
-            stop(i, fmt::format("left the domain [({:g}), ({:g})]", fmt::join(lo, " "), fmt::join(hi, " ")));
-    }
-}
-
 template <int D>
 void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
@@ -117,6 +92,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
     TimeIntegrator<D>& integrator = *setup.integrator;
     // The exact time from the state file: a directory name holds only its first digits.
     const double startTime = setup.header.time;
+    const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
 
     RunControls controls = RunControls::read(controlDict);
     const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
@@ -204,7 +180,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         if (system.wrapPeriodic()) integrator.stateChangedOutside();
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;
-        checkState(system, step, t, setup.rho0);
+        checkFluidState(system.fluid, system.domainMin(), system.domainMax(), {c0, setup.rho0}, step, t);
         const bool last = t >= controls.endTime - timeTolerance;
         if (const int signal = stopRequest.signal(); signal != 0 && !last) {
             runFunctionObjects(t, true);
