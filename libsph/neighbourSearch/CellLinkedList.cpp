@@ -41,6 +41,43 @@ std::pair<std::size_t, std::size_t> shareOf(std::size_t count, int thread, int t
     return {count * t / threads, count * (t + 1) / threads};
 }
 
+// Calls row(first, last) for the cells [first, last] of each row of the stencil around the cell
+// at c: five consecutive cells, or one cell at a time across a periodic x boundary. A local
+// function, called once per use, so that the compiler inlines it into the hot stencilRanges.
+template <int D, class Row>
+void forEachStencilRow(const std::array<int, D>& c, const std::array<int, D>& dims, const std::array<bool, D>& periodic, Row&& row) {
+    constexpr int reach = CellLinkedList<D>::reach;
+    std::array<int, D> offset{};
+    for (int d = 1; d < D; ++d) offset[static_cast<std::size_t>(d)] = -reach;
+    while (true) {
+        bool inside = true;
+        long rowCell = 0;
+        for (int d = D - 1; d >= 1; --d) {
+            const auto dd = static_cast<std::size_t>(d);
+            int cd = c[dd] + offset[dd];
+            if (periodic[dd]) cd = (cd + dims[dd]) % dims[dd];
+            if (cd < 0 || cd >= dims[dd]) inside = false;
+            rowCell = rowCell * dims[dd] + cd;
+        }
+        if (inside) {
+            if (periodic[0]) {
+                for (int dx = -reach; dx <= reach; ++dx) {
+                    const long cell = rowCell * dims[0] + (c[0] + dx + dims[0]) % dims[0];
+                    row(cell, cell);
+                }
+            } else {
+                row(rowCell * dims[0] + std::max(c[0] - reach, 0), rowCell * dims[0] + std::min(c[0] + reach, dims[0] - 1));
+            }
+        }
+        int d = 1;
+        for (; d < D; ++d) {
+            if (++offset[static_cast<std::size_t>(d)] <= reach) break;
+            offset[static_cast<std::size_t>(d)] = -reach;
+        }
+        if (d >= D) break;
+    }
+}
+
 }  // namespace
 
 // A counting sort, in parallel by destination: each thread counts, then places, the points of
@@ -111,46 +148,32 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         }
     }
     cellStart_[cells] = static_cast<std::uint32_t>(n);
+    if (!pointNear_.empty()) markCellsNear(points, begin, end);
 }
 
 template <int D>
 typename CellLinkedList<D>::StencilRanges CellLinkedList<D>::stencilRanges(const Vec<D>& x) const {
     StencilRanges stencil;
-    const auto add = [&](long first, long last) {
+    forEachStencilRow<D>(cellCoordinates(x), dims_, periodic_, [&](long first, long last) {
         const std::uint32_t begin = cellStart_[static_cast<std::size_t>(first)], end = cellStart_[static_cast<std::size_t>(last) + 1];
         if (begin < end) stencil.ranges[static_cast<std::size_t>(stencil.count++)] = {begin, end};
-    };
-    const std::array<int, D> c = cellCoordinates(x);
-    std::array<int, D> offset{};
-    for (int d = 1; d < D; ++d) offset[static_cast<std::size_t>(d)] = -reach;
-    while (true) {
-        bool inside = true;
-        long rowCell = 0;
-        for (int d = D - 1; d >= 1; --d) {
-            const auto dd = static_cast<std::size_t>(d);
-            int cd = c[dd] + offset[dd];
-            if (periodic_[dd]) cd = (cd + dims_[dd]) % dims_[dd];
-            if (cd < 0 || cd >= dims_[dd]) inside = false;
-            rowCell = rowCell * dims_[dd] + cd;
-        }
-        if (inside) {
-            if (periodic_[0]) {
-                for (int dx = -reach; dx <= reach; ++dx) {
-                    const long cell = rowCell * dims_[0] + (c[0] + dx + dims_[0]) % dims_[0];
-                    add(cell, cell);
-                }
-            } else {
-                add(rowCell * dims_[0] + std::max(c[0] - reach, 0), rowCell * dims_[0] + std::min(c[0] + reach, dims_[0] - 1));
-            }
-        }
-        int d = 1;
-        for (; d < D; ++d) {
-            if (++offset[static_cast<std::size_t>(d)] <= reach) break;
-            offset[static_cast<std::size_t>(d)] = -reach;
-        }
-        if (d >= D) break;
-    }
+    });
     return stencil;
+}
+
+template <int D>
+void CellLinkedList<D>::markCellsNearPoints() {
+    pointNear_.assign(cellCount(), 0);
+}
+
+// A point lies in the stencil of exactly the cells of its own cell's stencil.
+template <int D>
+void CellLinkedList<D>::markCellsNear(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
+    std::fill(pointNear_.begin(), pointNear_.end(), 0);
+    for (std::size_t k = begin; k < end; ++k)
+        forEachStencilRow<D>(cellCoordinates(points[k]), dims_, periodic_, [&](long first, long last) {
+            std::fill(pointNear_.begin() + first, pointNear_.begin() + last + 1, 1);
+        });
 }
 
 template <int D>

@@ -141,6 +141,13 @@ public:
 
     std::size_t cellCount() const { return cellStart_.size() - 1; }
 
+    // From the next build on, keeps which cells have a point of the list in their stencil, so that
+    // a query from a cell with none can be skipped (the fluid-wall pass: most fluid cells have no
+    // wall particle within reach). A build then costs 5^(D-1) row fills per point more.
+    void markCellsNearPoints();
+    // Whether a point of the last build lies in the stencil of `cell` (after markCellsNearPoints).
+    bool anyPointNear(std::uint32_t cell) const { return pointNear_[cell] != 0; }
+
 private:
     std::array<int, D> cellCoordinates(const Vec<D>& x) const {
         std::array<int, D> c;
@@ -158,6 +165,7 @@ private:
         for (int d = D - 1; d >= 0; --d) index = index * static_cast<std::size_t>(dims_[static_cast<std::size_t>(d)]) + static_cast<std::size_t>(c[static_cast<std::size_t>(d)]);
         return index;
     }
+    void markCellsNear(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end);
 
     Vec<D> lower_;
     Vec<D> inverseCellSizes_;  // per direction: a periodic direction stretches its cells to fit
@@ -169,6 +177,7 @@ private:
     std::vector<std::uint32_t> sorted_;     // cell order -> point index
     std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries
     std::vector<std::uint32_t> sortedCell_;  // cell of each place
+    std::vector<std::uint8_t> pointNear_;    // per cell, when kept: 1 if a point lies in its stencil
     // Scratch of build, kept so as not to allocate it again every step.
     std::vector<std::uint32_t> cellOf_;        // cell of each point
     std::vector<std::uint32_t> nextPlace_;     // per cell: its count, then its next place

@@ -71,6 +71,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         if (!walls.hasVector("initialNormal")) walls.addVector("initialNormal", Vec<D>::Zero()) = walls.vector("normal");
         walls.addVector("acceleration", Vec<D>::Zero(), false);
     }
+    wallCells_.markCellsNearPoints();  // the fluid-wall pass skips the fluid cells with no wall particle near
     wallCells_.build(walls.position, 0, wallParticleEnd_);
 }
 
@@ -478,7 +479,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 [[maybe_unused]] const double pOverRho2 = p[i] / (rho[i] * rho[i]);
                 if (cells.cellAt(k) != wallStencilCell) {  // the wall list has the fluid list's grid
                     wallStencilCell = cells.cellAt(k);
-                    wallStencil = wallCells.stencilRanges(x[i]);
+                    wallStencil = wallCells.anyPointNear(wallStencilCell) ? wallCells.stencilRanges(x[i]) : typename CellLinkedList<D>::StencilRanges{};
                 }
                 if constexpr (lanes == 1) {
                     wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {

@@ -132,3 +132,30 @@ TEST(CellLinkedList, PeriodicDirectionsFindNearestImages) {
 TEST(CellLinkedList, PeriodicDirectionShorterThanTwoAndAHalfRadiiIsRejected) {
     EXPECT_THROW(sph::CellLinkedList<2>(sph::Vec<2>(0, 0), sph::Vec<2>(0.2, 1), 0.1, {true, false}), std::invalid_argument);
 }
+
+// A cell is marked near a point exactly when a query from it has a range to search, also
+// across a periodic side and after a build that moved the points.
+TEST(CellLinkedList, CellsNearPointsAreThoseWhoseStencilHasOne) {
+    for (const bool periodicX : {false, true}) {
+        sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1, {periodicX, false});
+        cells.markCellsNearPoints();
+        std::vector<sph::Vec<2>> points{{0.99, 0.5}, {0.3, 0.02}, {0.31, 0.03}, {0.6, 0.97}};
+        for (int build = 0; build < 2; ++build) {
+            cells.build(points);
+            int near = 0, far = 0;
+            for (double x = 0.0125; x < 1.0; x += 0.025) {
+                for (double y = 0.0125; y < 1.0; y += 0.025) {
+                    const sph::Vec<2> query(x, y);
+                    sph::CellLinkedList<2> probe(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1, {periodicX, false});
+                    probe.build({query});  // its cell number: the grid is the same
+                    const bool marked = cells.anyPointNear(probe.cellAt(0));
+                    ASSERT_EQ(marked, cells.stencilRanges(query).count > 0) << "(" << x << ", " << y << "), periodic " << periodicX << ", build " << build;
+                    (marked ? near : far) += 1;
+                }
+            }
+            EXPECT_GT(near, 0);
+            EXPECT_GT(far, near);
+            points = {{0.5, 0.5}, {0.02, 0.9}};  // the second build must clear the first's marks
+        }
+    }
+}
