@@ -148,7 +148,7 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         }
     }
     cellStart_[cells] = static_cast<std::uint32_t>(n);
-    if (!pointNear_.empty()) markCellsNear(points, begin, end);
+    if (!pointNear_.empty()) markCellsNear();
 }
 
 template <int D>
@@ -166,14 +166,18 @@ void CellLinkedList<D>::markCellsNearPoints() {
     pointNear_.assign(cellCount(), 0);
 }
 
-// A point lies in the stencil of exactly the cells of its own cell's stencil.
+// A point lies in the stencil of exactly the cells of its own cell's stencil: each cell with
+// points marks its stencil once (the places are in cell order), so that a wall list rebuilt
+// every step (moving walls) pays per cell, not per point.
 template <int D>
-void CellLinkedList<D>::markCellsNear(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
+void CellLinkedList<D>::markCellsNear() {
     std::fill(pointNear_.begin(), pointNear_.end(), 0);
-    for (std::size_t k = begin; k < end; ++k)
-        forEachStencilRow<D>(cellCoordinates(points[k]), dims_, periodic_, [&](long first, long last) {
+    for (std::size_t k = 0; k < sortedCell_.size(); ++k) {
+        if (k > 0 && sortedCell_[k] == sortedCell_[k - 1]) continue;
+        forEachStencilRow<D>(cellCoordinates(sortedPosition_[k]), dims_, periodic_, [&](long first, long last) {
             std::fill(pointNear_.begin() + first, pointNear_.begin() + last + 1, 1);
         });
+    }
 }
 
 template <int D>

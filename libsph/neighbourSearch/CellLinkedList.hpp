@@ -143,7 +143,7 @@ public:
 
     // From the next build on, keeps which cells have a point of the list in their stencil, so that
     // a query from a cell with none can be skipped (the fluid-wall pass: most fluid cells have no
-    // wall particle within reach). A build then costs 5^(D-1) row fills per point more.
+    // wall particle within reach). A build then costs 5^(D-1) row fills per cell with points more.
     void markCellsNearPoints();
     // Whether a point of the last build lies in the stencil of `cell` (after markCellsNearPoints).
     bool anyPointNear(std::uint32_t cell) const { return pointNear_[cell] != 0; }
@@ -165,7 +165,7 @@ private:
         for (int d = D - 1; d >= 0; --d) index = index * static_cast<std::size_t>(dims_[static_cast<std::size_t>(d)]) + static_cast<std::size_t>(c[static_cast<std::size_t>(d)]);
         return index;
     }
-    void markCellsNear(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end);
+    void markCellsNear();
 
     Vec<D> lower_;
     Vec<D> inverseCellSizes_;  // per direction: a periodic direction stretches its cells to fit
