@@ -21,8 +21,10 @@ struct ArtificialViscosityMonaghan1992 {
     // (unpredictable in the pair loop, and in the way of its vectorisation).
     static constexpr bool alongSeparation = true;
     double pairFactor(double vDotR, double /*r2*/, double inverseRegularisedR2, double rhoi, double rhoj, double F) const {
+        // The division does not wait for mu, so that its latency overlaps the rest of the pair.
+        const double inverseMeanDensity = 2.0 / (rhoi + rhoj);
         const double mu = h * std::min(vDotR, 0.0) * inverseRegularisedR2;
-        return -(-alpha * c0 * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj)) * F;
+        return (alpha * c0 * mu - beta * mu * mu) * inverseMeanDensity * F;
     }
 
     double alpha, beta, h, c0;
