@@ -204,6 +204,17 @@ TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
     EXPECT_DOUBLE_EQ(atMinusY, rho0 * (std::pow(0.7, 1.0 / 7.0) - 1.0));
 }
 
+// Monaghan (1992) by hand, with the quadratic (beta) term the direct sums above leave at 0:
+// h = 0.02, v.r = -0.3, r^2 = 4e-4: mu = h v.r / (r^2 + 0.01 h^2) = -14.8514851...,
+// Pi = (-alpha c0 mu + beta mu^2) / rho_bar = (29.70297 + 44.11332) / 1005 = 0.0734490473,
+// and the pair factor is -Pi F. A receding pair (v.r > 0) gets none.
+TEST(PairLoop, ArtificialViscosityPairFactorByHand) {
+    const ArtificialViscosityMonaghan1992 viscosity(0.1, 0.2, 0.02, 20.0);
+    const double r2 = 4e-4, inverseRegularisedR2 = 1.0 / (r2 + 0.01 * 0.02 * 0.02), F = -5.0;
+    EXPECT_NEAR(viscosity.pairFactor(-0.3, r2, inverseRegularisedR2, 1000.0, 1010.0, F), 0.3672452364196077, 1e-15);
+    EXPECT_EQ(viscosity.pairFactor(0.3, r2, inverseRegularisedR2, 1000.0, 1010.0, F), 0.0);
+}
+
 TEST(PairLoop, InviscidSceneAllocatesAndEvaluatesNoViscousTerm) {
     // No viscous term can be evaluated: NoViscosity has no pair factor for the loop to call.
     static_assert(!HasPairFactor<NoViscosity>);
