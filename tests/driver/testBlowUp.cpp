@@ -6,6 +6,7 @@
 #include "generation/ParticleGenerator.hpp"
 #include "io/ParticleFile.hpp"
 #include "support/CaseFixture.hpp"
+#include "support/RestoreThreadCount.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -64,10 +65,7 @@ TEST(BlowUp, SundialsIntegratorStopsWithTheFailureAndItsCause) {
 // Every fault is named, and the report is the first faulty particle in storage order with any
 // number of threads (the check runs in parallel).
 TEST(BlowUp, CheckNamesTheFirstFaultyParticleAndItsFault) {
-    struct RestoreThreads {
-        int threads = omp_get_max_threads();
-        ~RestoreThreads() { omp_set_num_threads(threads); }
-    } restore;
+    const sph::test::RestoreThreadCount restore;
     const sph::FluidStateLimits limits{10.0, 1000.0};
     const sph::Vec<2> lo(0.0, 0.0), hi(1.0, 1.0);
     sph::ParticleSet<2> fluid("fluid");

@@ -1,5 +1,7 @@
 #include "neighbourSearch/CellLinkedList.hpp"
 
+#include "support/RestoreThreadCount.hpp"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -76,10 +78,7 @@ TEST(CellLinkedList, OrderIsTheStableSortsWhateverTheNumberOfThreads) {
     std::vector<std::uint32_t> expected(end - begin);
     std::iota(expected.begin(), expected.end(), static_cast<std::uint32_t>(begin));
     std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t i, std::uint32_t j) { return cellOf(points[i]) < cellOf(points[j]); });
-    struct RestoreThreads {
-        int threads = omp_get_max_threads();
-        ~RestoreThreads() { omp_set_num_threads(threads); }
-    } restore;  // also when an assertion returns early
+    const sph::test::RestoreThreadCount restore;
     for (const int threads : {1, 2, 3, 7}) {
         omp_set_num_threads(threads);
         sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
