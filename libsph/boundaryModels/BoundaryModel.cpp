@@ -34,10 +34,12 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                  });
     const std::vector<CoefficientDoc> correction{
         {"repulsion", "", "{ type monaghanKajtar | lennardJones; ... }: the partner that stops penetration"},
-        {"calibration", "calibrated", "calibrated (divide by the blended kernel c_s . n_j) or literal (by W_sj)"},
+        {"calibration", "wallPressure",
+         "wallPressure (virtual particles at the extrapolated wall pressure), calibrated (the paper: cancel the sample's normal "
+         "acceleration, divided by the blended kernel c_s . n_j) or literal (by W_sj)"},
         {"direction", "normal", "normal (n_j) or radial (r_ij/|r_ij|)"},
-        {"sample", "{ type nearest; size 4; }", "or { type withinRadius; radius r; }"},
-        {"temporalSmoothing", "1", "lambda of C_j <- (1 - lambda) C_j + lambda C_j^new, in (0, 1]"}};
+        {"sample", "{ type nearest; size 4; }", "calibrated and literal: or { type withinRadius; radius r; }"},
+        {"temporalSmoothing", "1", "calibrated and literal: lambda of C_j <- (1 - lambda) C_j + lambda C_j^new, in (0, 1]"}};
     registry.add("deficiencyCorrection", {"boundary deficiency correction, published weighting, with a repulsion partner",
                                           "Jones, Yang & McCue-Weil, Ship Sci. & Tech. 4(7) (2010) 21", correction},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {

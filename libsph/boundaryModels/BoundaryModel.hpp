@@ -32,6 +32,10 @@ public:
     // True when the patch's particles enter the fluid's kernel sums (dummy, dynamic boundary).
     virtual bool actsThroughWallParticles() const = 0;
 
+    // The fewest layers of wall particles the model needs for a kernel of this support; a
+    // wall-force model needs exactly one, on the wall surface.
+    virtual int minimumLayers(double /*support*/, double /*dx*/) const { return 1; }
+
     // True when the patch's wall density is part of the integrated state.
     virtual bool evolvesWallDensity() const { return false; }
 

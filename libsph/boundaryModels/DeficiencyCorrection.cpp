@@ -2,6 +2,7 @@
 
 #include "boundaryModels/DeficiencyWeightingBoundaryIntegral.hpp"
 #include "boundaryModels/DeficiencyWeightingJones2010.hpp"
+#include "boundaryModels/WallPressureExtrapolation.hpp"
 #include "physics/FluidSystem.hpp"
 
 #include <fmt/format.h>
@@ -11,21 +12,68 @@
 
 namespace sph {
 
+namespace {
+
+DeficiencyCalibration readCalibration(const Dictionary& dict) {
+    const std::string calibration = dict.getOrDefault<std::string>("calibration", "wallPressure");
+    if (calibration == "wallPressure") return DeficiencyCalibration::WallPressure;
+    if (calibration == "calibrated") return DeficiencyCalibration::Calibrated;
+    if (calibration == "literal") return DeficiencyCalibration::Literal;
+    dict.fail("calibration", "expected wallPressure, calibrated or literal, found '" + calibration + "'");
+}
+
+const char* calibrationName(DeficiencyCalibration calibration) {
+    switch (calibration) {
+        case DeficiencyCalibration::WallPressure: return "wallPressure";
+        case DeficiencyCalibration::Calibrated: return "calibrated";
+        case DeficiencyCalibration::Literal: return "literal";
+    }
+    return "";
+}
+
+// The nearest `size` of the candidates (distance^2, index), and every candidate tied with the
+// last of them to round-off, so the sample never depends on storage order.
+void keepNearest(std::vector<std::pair<double, std::uint32_t>>& candidates, int size) {
+    const auto k = static_cast<std::size_t>(size);
+    if (candidates.size() <= k) return;
+    std::nth_element(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(k - 1), candidates.end());
+    const double tied = candidates[k - 1].first * (1.0 + 1e-9);
+    const auto last = std::partition(candidates.begin() + static_cast<std::ptrdiff_t>(k), candidates.end(),
+                                     [&](const auto& candidate) { return candidate.first <= tied; });
+    candidates.erase(last, candidates.end());
+}
+
+}  // namespace
+
 template <int D, class Weighting>
 DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName)
-    : typeName_(std::move(typeName)) {
-    const Dictionary* repulsion = dict.findSubDict("repulsion");
-    if (!repulsion)
-        throw FatalError(dict.where(), "patch '" + dict.name() + "': " + typeName_ +
-                                           " needs a repulsion partner to stop penetration: repulsion { type monaghanKajtar; K ...; } "
-                                           "or repulsion { type lennardJones; Dc ...; }");
-    repulsion_ = readRepulsionLaw(*repulsion, context);
-    const std::string calibration = dict.getOrDefault<std::string>("calibration", "calibrated");
-    if (calibration != "calibrated" && calibration != "literal") dict.fail("calibration", "expected calibrated or literal, found '" + calibration + "'");
-    literal_ = calibration == "literal";
+    : typeName_(std::move(typeName)), calibration_(readCalibration(dict)) {
+    // The partner: wallDistance unless the case names a discrete force law.
+    penalty_ = WallDistancePenalty{0.05 * context.c0 * context.c0, context.dx, 0.5 * context.dx};
+    if (const Dictionary* repulsion = dict.findSubDict("repulsion")) {
+        const std::string type = repulsion->get<std::string>("type");
+        if (type != "wallDistance" && type != "monaghanKajtar" && type != "lennardJones")
+            throw FatalError(repulsion->entry("type").tokens().front().where,
+                             "unknown repulsion '" + type + "'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar\n    wallDistance");
+        if (type == "wallDistance") {
+            penalty_.K = repulsion->getNonNegativeOrDefault("K", penalty_.K);
+            penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
+        } else {
+            repulsion_ = readRepulsionLaw(*repulsion, context);
+            penalty_.K = 0.0;
+        }
+    }
     const std::string direction = dict.getOrDefault<std::string>("direction", "normal");
     if (direction != "normal" && direction != "radial") dict.fail("direction", "expected normal or radial, found '" + direction + "'");
     radialDirection_ = direction == "radial";
+    const bool sampled = calibration_ != DeficiencyCalibration::WallPressure;
+    const auto onlySampled = [&](const std::string& keyword) {
+        if (!sampled && dict.found(keyword))
+            dict.fail(keyword, "applies to calibration calibrated or literal; calibration wallPressure takes every fluid particle within the "
+                               "kernel support of a wall particle and has no history to smooth");
+    };
+    onlySampled("sample");
+    onlySampled("temporalSmoothing");
     sampleSize_ = 4;
     sampleRadius_ = 0.0;  // set to the support radius in addFields
     if (const Dictionary* sample = dict.findSubDict("sample")) {
@@ -46,10 +94,12 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
 
 template <int D, class Weighting>
 std::string DeficiencyCorrection<D, Weighting>::describe() const {
-    return fmt::format("{}: calibration {}, direction {}, sample {}, temporalSmoothing {:g}, repulsion {}", typeName_,
-                       literal_ ? "literal" : "calibrated", radialDirection_ ? "radial" : "normal",
-                       sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_,
-                       sph::describe(repulsion_));
+    std::string text = fmt::format("{}: calibration {}, direction {}", typeName_, calibrationName(calibration_), radialDirection_ ? "radial" : "normal");
+    if (calibration_ != DeficiencyCalibration::WallPressure)
+        text += fmt::format(", sample {}, temporalSmoothing {:g}",
+                            sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
+    return text + ", repulsion " +
+           (repulsion_ ? sph::describe(*repulsion_) : fmt::format("wallDistance: K {:g}, distance {:g}", penalty_.K, penalty_.distance));
 }
 
 template <int D, class Weighting>
@@ -58,91 +108,162 @@ void DeficiencyCorrection<D, Weighting>::addFields(FluidSystem<D>& system) {
     system.walls.addScalar("correctionCoefficient", 0.0);
     system.walls.addVector("acceleration", Vec<D>::Zero(), false);
     if (sampleSize_ > 0) sampleRadius_ = system.supportRadius();
+    outsideFraction_ = std::visit([](const auto& kernel) { return KernelOutsideFraction<D>(kernel); }, system.models().kernel);
 }
 
 template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) {
     // All zero: the state was written with another model on this patch; start afresh.
     const auto& C = system.walls.scalar("correctionCoefficient");
-    repeatWrittenCoefficients_ = std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end),
+    repeatWrittenCoefficients_ = calibration_ != DeficiencyCalibration::WallPressure &&
+                                 std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end),
                                              [](double c) { return c != 0.0; });
     firstEvaluation_ = !repeatWrittenCoefficients_;
 }
 
 template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin,
-                                                       std::size_t end, double) {
+                                                       std::size_t end, double t) {
+    const bool wallPressure = calibration_ == DeficiencyCalibration::WallPressure;
+    if (radialDirection_)
+        wallPressure ? correct<true, true>(system, patchCells, begin, end, t) : correct<true, false>(system, patchCells, begin, end, t);
+    else
+        wallPressure ? correct<false, true>(system, patchCells, begin, end, t) : correct<false, false>(system, patchCells, begin, end, t);
+    if (repulsion_) addRepulsion(system, patchCells, *repulsion_);
+}
+
+template <int D, class Weighting>
+template <bool Radial, bool WallPressure>
+void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end,
+                                                 double t) {
+    // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
+    constexpr bool separateAreaIntegral = Weighting::normalised || Radial;
     const std::size_t n = system.fluid.ownedCount();
     const Vec<D>* x = system.fluid.position.data();
-    const Vec<D>* uncorrected = system.fluid.vector("uncorrectedAcceleration").data();
+    const Vec<D>* v = system.fluid.vector("velocity").data();
+    const double* p = system.fluid.scalar("pressure").data();
+    const double* rho = system.fluid.scalar("density").data();
+    double* densityRate = system.continuity() ? system.fluid.scalar("densityRate").data() : nullptr;
+    const bool literal = calibration_ == DeficiencyCalibration::Literal;
+    const Vec<D>* uncorrected = WallPressure ? nullptr : system.fluid.vector("uncorrectedAcceleration").data();
     Vec<D>* a = system.fluid.vector("acceleration").data();
     Vec<D>* correction = system.fluid.vector("boundaryCorrection").data();
     const Vec<D>* xWall = system.walls.position.data();
+    const Vec<D>* vWall = system.walls.vector("velocity").data();
     const Vec<D>* normal = system.walls.vector("normal").data();
     const Vec<D>* aWall = system.walls.vector("acceleration").data();
     const double* spacing = system.walls.scalar("spacing").data();
+    const double* area = system.walls.scalar("area").data();
     double* C = system.walls.scalar("correctionCoefficient").data();
-    const double influenceRadius = system.supportRadius();
+    double* pWall = system.walls.scalar("pressure").data();
+    double* rhoWall = system.walls.scalar("density").data();
+    const double radius = system.supportRadius();
+    const Vec<D> gravity = system.gravityAt(t);
     const double lambda = repeatWrittenCoefficients_ ? 0.0 : firstEvaluation_ ? 1.0 : smoothing_;
     firstEvaluation_ = repeatWrittenCoefficients_ = false;
     weightSum_.assign(n, 0.0);
     blend_.assign(n, Vec<D>::Zero());
-    const bool radial = radialDirection_;
-    const auto directionOf = [&](std::uint32_t j, const Vec<D>& r, double distance) { return radial ? Vec<D>(r / distance) : normal[j]; };
+    if (separateAreaIntegral) areaIntegral_.assign(n, Vec<D>::Zero());
+    push_.assign(end, 0.0);  // indexed by wall particle; [0, begin) unused
+    virtualDensity_.assign(end, 0.0);
+    const auto directionOf = [&](std::uint32_t j, const Vec<D>& r, double distance) -> Vec<D> {
+        if constexpr (Radial) return r / distance;
+        else return normal[j];
+    };
 
     std::visit(
-        [&](const auto& kernel) {
-            // Pass 1: each fluid particle's weights over Omega'_i and its blended kernel c_i.
+        [&](const auto& kernel, const auto& eos) {
+            // Pass 1: each fluid particle's weights, blend c_i and area integral g_i.
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
                 double sum = 0.0;
-                Vec<D> blend = Vec<D>::Zero();
-                patchCells.forEachNeighbour(x[i], influenceRadius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
+                patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
                     const double distance = std::sqrt(r2);
                     if (distance == 0.0) return;
-                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], influenceRadius);
+                    const double W = kernel.value(distance);
+                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
                     sum += w;
-                    blend += (kernel.value(distance) * w) * directionOf(j, r, distance);
+                    blend += (W * w) * directionOf(j, r, distance);
+                    if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
                 });
                 weightSum_[i] = sum;
                 blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
+                if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
             }
-            // Pass 2: C_j from the sample of fluid particles near wall particle j.
+            const Vec<D>* areaIntegral = separateAreaIntegral ? areaIntegral_.data() : blend_.data();
+            // Pass 2: each wall particle's pressure, density, scale R_j and push.
             const auto& fluidCells = system.fluidCells();
-#pragma omp parallel for schedule(static)
-            for (std::size_t j = begin; j < end; ++j) {
-                std::vector<std::pair<double, std::uint32_t>> candidates;
-                fluidCells.forEachNeighbour(xWall[j], sampleRadius_, [&](std::uint32_t s, const Vec<D>&, double r2) { candidates.emplace_back(r2, s); });
-                if (sampleSize_ > 0 && candidates.size() > static_cast<std::size_t>(sampleSize_)) {
-                    std::partial_sort(candidates.begin(), candidates.begin() + sampleSize_, candidates.end());
-                    candidates.resize(static_cast<std::size_t>(sampleSize_));
+#pragma omp parallel
+            {
+                std::vector<std::pair<double, std::uint32_t>> sample;  // one per thread, reused
+#pragma omp for schedule(static)
+                for (std::size_t j = begin; j < end; ++j) {
+                    WallPressureExtrapolation<D> extrapolation;
+                    double scaleNumerator = 0.0, scaleDenominator = 0.0;
+                    fluidCells.forEachNeighbour(xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
+                        const double W = kernel.value(std::sqrt(r2));
+                        extrapolation.add(W, p[s], rho[s], r);
+                        scaleNumerator += W * areaIntegral[s].dot(normal[j]);
+                        scaleDenominator += W * blend_[s].dot(normal[j]);
+                    });
+                    const double pj = extrapolation.weight > 0.0 ? std::max(extrapolation.pressure(gravity - aWall[j]), eos.p0) : eos.p0;
+                    const double rhoj = eos.density(pj);
+                    const double scale = scaleDenominator > 0.0 ? scaleNumerator / scaleDenominator : 0.0;
+                    const double uniformCoefficient = -2.0 * pj * scale / rhoj;
+                    pWall[j] = pj;
+                    rhoWall[j] = rhoj;
+                    virtualDensity_[j] = rhoj * scale;
+                    if constexpr (WallPressure) {
+                        push_[j] = pj * scale / rhoj;
+                        C[j] = uniformCoefficient;
+                        continue;
+                    }
+                    sample.clear();
+                    fluidCells.forEachNeighbour(xWall[j], sampleRadius_, [&](std::uint32_t s, const Vec<D>&, double r2) { sample.emplace_back(r2, s); });
+                    if (sampleSize_ > 0) keepNearest(sample, sampleSize_);
+                    double numerator = 0.0, denominator = 0.0;
+                    for (const auto& [r2, s] : sample) {
+                        numerator += (uncorrected[s] - aWall[j]).dot(normal[j]);
+                        denominator += literal ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
+                    }
+                    // Never attracting, never more than twice the virtual particles' push.
+                    const double fresh =
+                        denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
+                    C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
+                    push_[j] = -C[j];
                 }
-                double numerator = 0.0, denominator = 0.0;
-                for (const auto& [r2, s] : candidates) {
-                    numerator += (uncorrected[s] - aWall[j]).dot(normal[j]);
-                    denominator += literal_ ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
-                }
-                const double fresh = denominator > 1e-12 * kernel.value(0.0) ? numerator / denominator : 0.0;
-                C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
             }
-            // Pass 3: the blended correction.
+            // Pass 3: the blended correction, and the virtual particles' compression.
+            const double* push = push_.data();
+            const double* virtualDensity = virtualDensity_.data();
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
                 if (!(weightSum_[i] > 0.0)) continue;
                 const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
-                Vec<D> sum = Vec<D>::Zero();
-                patchCells.forEachNeighbour(x[i], influenceRadius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                const double ownPressureTerm = WallPressure ? p[i] / (rho[i] * rho[i]) : 0.0;
+                Vec<D> sum = Vec<D>::Zero(), normalSum = Vec<D>::Zero();
+                double rate = 0.0, areaWeight = 0.0, distanceSum = 0.0;
+                patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
                     const double distance = std::sqrt(r2);
                     if (distance == 0.0) return;
-                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], influenceRadius);
-                    sum -= (C[j] * kernel.value(distance) * w * inverseSum) * directionOf(j, r, distance);
+                    const double W = kernel.value(distance);
+                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
+                    const double shape = W * w * inverseSum;
+                    areaWeight += W * area[j];
+                    normalSum += (W * area[j]) * normal[j];
+                    distanceSum += W * area[j] * r.dot(normal[j]);
+                    const Vec<D> d = directionOf(j, r, distance);
+                    sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
+                    rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
+                    if constexpr (WallPressure) sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
                 });
-                a[i] += sum;
+                a[i] += sum + penalty_.acceleration<D>(areaWeight, normalSum, distanceSum);
                 correction[i] += sum;
+                if (densityRate) densityRate[i] += rate;
             }
         },
-        system.models().kernel);
-    addRepulsion(system, patchCells, repulsion_);
+        system.models().kernel, system.models().eos);
 }
 
 template class DeficiencyCorrection<1, DeficiencyWeightingJones2010>;

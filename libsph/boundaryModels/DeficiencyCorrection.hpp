@@ -1,31 +1,50 @@
-// The boundary deficiency correction of Jones, Yang & McCue-Weil (2010), with a repulsion
-// partner (Monaghan & Kajtar 2009 or Lennard-Jones) to stop penetration. Per evaluation:
-//  1. a_i^unc: the fluid acceleration of the force loop, without any wall force;
-//  2. per wall particle j, from a sample S_j of fluid particles near it:
-//       calibrated (default): C_j = sum_s ((a_s^unc - a_j) . n_j) / sum_s (c_s . n_j),
-//                             c_s = sum_{k in Omega'_s} W(|r_sk|) wn_sk d_sk
-//       literal:              C_j = sum_s ((a_s^unc - a_j) . n_j) / sum_s W(|r_sj|)
-//     The paper averages the ratios; the ratio of the sums is the same for one sample (1D) or
-//     equal denominators (a straight wall), and does not divide by the near-zero c_s . n_j
-//     of a sample whose blend is dominated by another face (the corner of a hydrostatic tank
-//     blew up with the mean of ratios);
-//     optionally smoothed in time, C_j <- (1 - lambda) C_j + lambda C_j^new;
-//  3. a_i += -sum_{j in Omega'_i} C_j W(|r_ij|) wn_ij d_ij over wall particles within r_inf
-//     (the kernel support), d_ij = n_j (direction normal) or r_ij/|r_ij| (radial), wn_ij the
-//     weighting: DeficiencyWeightingJones2010 (published, w_ij normalised over Omega'_i) or
-//     DeficiencyWeightingBoundaryIntegral (area vectors, unnormalised);
-//  4. the repulsion partner adds its force.
-// a_j is the wall's acceleration (zero for fixed walls). A deficiency pulls the fluid towards
-// the wall, so C_j < 0 and the correction points along +n_j.
+// The boundary deficiency correction of Jones, Yang & McCue-Weil (2010): one layer of wall
+// particles on the wall surface, out of the fluid's kernel sums; the acceleration that the
+// missing virtual particles would give is added back by a coefficient per wall particle,
+// blended over the wall particles within reach, so the wall can move and deform with no
+// virtual particle to clump. Per evaluation:
+//  1. per fluid particle i, over the wall particles j within r_inf (the kernel support):
+//       the blend  c_i = sum_j W_ij wn_ij d_ij   and the area integral  g_i = sum_j W_ij A_j n_j
+//     with d_ij = n_j (direction normal) or r_ij/|r_ij| (radial), A_j the wall particle's area
+//     and wn_ij the weighting: DeficiencyWeightingJones2010 (published, w_ij / sum_k w_ik) or
+//     DeficiencyWeightingBoundaryIntegral (A_j; then g_i = c_i for the normal direction);
+//  2. per wall particle j, over the fluid s within r_inf:
+//       p_j = the wall pressure of Adami et al. (2012) (WallPressureExtrapolation), never below
+//             the background pressure p0; rho_j = rho(p_j) by the equation of state;
+//       R_j = sum_s W_sj g_s.n_j / sum_s W_sj c_s.n_j, the blend's scale to the area integral
+//             (1 for the boundary-integral weighting with normal direction; 0 with no fluid);
+//     and the push P_ij on fluid particle i by `calibration`:
+//       wallPressure (default): P_ij = (rho_j p_i / rho_i^2 + p_j / rho_j) R_j, the pressure term
+//           of virtual particles at p_j, rho_j filling the space behind the wall: by the
+//           divergence theorem their kernel-gradient sum is -sum_j W_ij A_j n_j;
+//       calibrated (the paper's, its reading of METHOD.md): P_ij = -C_j with
+//           C_j = sum_s ((a_s^unc - a_j).n_j) / sum_s (c_s.n_j) over the nearest-k sample
+//           (ties at the k-th distance all taken), bounded to [2 C_j^p, 0], C_j^p = -2 p_j R_j / rho_j;
+//       literal: the same with sum_s W(|r_sj|) as denominator;
+//     calibrated and literal may be smoothed in time, C_j <- (1 - lambda) C_j + lambda C_j^new;
+//  3. a_i += sum_j P_ij W_ij wn_ij d_ij, and with continuity density the virtual particles'
+//     compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij;
+//  4. the repulsion partner (Monaghan & Kajtar 2009, Lennard-Jones) adds its force.
+// Why wallPressure is the default (doc/boundaryFindings.md): the calibrated C_j makes the
+// sampled particles' normal acceleration equal the wall's, so it also cancels the real
+// deceleration of fluid arriving at a wall (impacts blow up) and has no bound where the
+// sample's kernel sum is far from complete; without the continuity term fluid pressing on a
+// wall never compresses. p_j is bounded by the fluid's pressure and the hydrostatic offset
+// over r_inf whatever the sample, and C_j^p = -2 p/rho reproduces the paper's uniform-pressure
+// calibration with the boundary-integral weighting.
+// The walls' pressure and density fields hold p_j and rho_j (ParaView, wall sensors), and
+// correctionCoefficient the uniform-pressure coefficient C_j (-2 p_j R_j / rho_j with wallPressure).
 // Reference: V. Jones, Q. Yang, L. McCue-Weil, Ship Science & Technology 4(7) (2010) 21-30,
-// Eqs. (7), (8); doc/models.md restates them.
+// Eqs. (7), (8); S. Adami, X.Y. Hu, N.A. Adams, J. Comput. Phys. 231 (2012) 7057, Eq. (27);
+// the boundary integral as in Kulasegaram et al. (2004) and Ferrand et al. (2013).
 // Example (constant/boundaryProperties):
 //   tank
 //   {
 //       type              deficiencyCorrection;     // or deficiencyCorrectionBoundaryIntegral
-//       repulsion         { type monaghanKajtar; K 10; }
-//       calibration       calibrated;               // or literal
+//       repulsion         { type monaghanKajtar; K 10; form shifted; }
+//       calibration       wallPressure;             // or calibrated, literal
 //       direction         normal;                   // or radial
+//       // calibrated and literal only:
 //       sample            { type nearest; size 4; } // or { type withinRadius; radius 0.02; }
 //       temporalSmoothing 1;                        // lambda in (0, 1]; 1: none
 //   }
@@ -33,10 +52,15 @@
 
 #include "boundaryModels/BoundaryModel.hpp"
 #include "boundaryModels/RepulsiveWall.hpp"
+#include "boundaryModels/WallDistancePenalty.hpp"
+#include "kernels/KernelOutsideFraction.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace sph {
+
+enum class DeficiencyCalibration { WallPressure, Calibrated, Literal };
 
 template <int D, class Weighting>
 class DeficiencyCorrection : public BoundaryModel<D> {
@@ -44,24 +68,33 @@ public:
     DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName);
 
     bool actsThroughWallParticles() const override { return false; }
-    bool needsUncorrectedAcceleration() const override { return true; }
+    bool needsUncorrectedAcceleration() const override { return calibration_ != DeficiencyCalibration::WallPressure; }
     std::string describe() const override;
     void addFields(FluidSystem<D>& system) override;
     void resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) override;
     void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t) override;
 
 private:
+    template <bool Radial, bool WallPressure>
+    void correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t);
+
     std::string typeName_;
-    RepulsionLaw repulsion_;
-    bool literal_;
+    WallDistancePenalty penalty_;            // K = 0 when a discrete law is the partner
+    std::optional<RepulsionLaw> repulsion_;  // a discrete law (Monaghan-Kajtar, Lennard-Jones)
+    DeficiencyCalibration calibration_;
     bool radialDirection_;
     int sampleSize_;       // nearest-k sample; 0 when sampling by radius
     double sampleRadius_;  // radius of the sample (the kernel support for nearest-k)
     double smoothing_;
     bool firstEvaluation_ = true;
     bool repeatWrittenCoefficients_ = false;  // restart: the written C_j already hold this evaluation's
-    std::vector<double> weightSum_;  // per fluid particle, this evaluation only
-    std::vector<Vec<D>> blend_;      // c_i, per fluid particle
+    // This evaluation only; sized once per evaluation, never per particle.
+    std::vector<double> weightSum_;      // per fluid particle: sum_j w_ij
+    std::vector<Vec<D>> blend_;          // c_i
+    std::vector<Vec<D>> areaIntegral_;   // g_i, where it differs from c_i
+    KernelOutsideFraction<D> outsideFraction_;
+    std::vector<double> push_;           // per wall particle: p_j R_j / rho_j, or -C_j
+    std::vector<double> virtualDensity_; // per wall particle: rho_j R_j
 };
 
 }  // namespace sph

@@ -1,6 +1,7 @@
 // A refined weighting of the deficiency correction, from the divergence theorem: the
 // uniform-pressure deficiency of particle i is -(2p/rho) sum_j W_ij S_j, with S_j = A_j n_j the
-// wall particle's area vector (A_j = s_j^(D-1): its spacing in 2D, spacing^2 in 3D). The
+// wall particle's area vector (A_j the wall field `area`: the length of wall it stands for in
+// 2D, its area in 3D; s_j^(D-1) where a state has no area field). The
 // correction applies -sum_j C_j W_ij A_j n_j unnormalised, so a corner, where the two faces'
 // area vectors add, and a curved wall, whose particles' areas differ, are weighted by the
 // geometry itself rather than by the empirical w_ij (METHOD.md, "open improvements";
@@ -9,16 +10,15 @@
 
 #include "core/Vector.hpp"
 
-#include <cmath>
-
 namespace sph {
 
 struct DeficiencyWeightingBoundaryIntegral {
     static constexpr bool normalised = false;
 
     template <int D>
-    static double weight(double /*distance*/, const Vec<D>& /*direction*/, const Vec<D>& /*normal*/, double spacing, double /*influenceRadius*/) {
-        return std::pow(spacing, D - 1);
+    static double weight(double /*distance*/, const Vec<D>& /*direction*/, const Vec<D>& /*normal*/, double /*spacing*/, double area,
+                         double /*influenceRadius*/) {
+        return area;
     }
 };
 

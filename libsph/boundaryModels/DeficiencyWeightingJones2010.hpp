@@ -11,7 +11,7 @@ struct DeficiencyWeightingJones2010 {
     static constexpr bool normalised = true;
 
     template <int D>
-    static double weight(double distance, const Vec<D>& direction, const Vec<D>& normal, double spacing, double influenceRadius) {
+    static double weight(double distance, const Vec<D>& direction, const Vec<D>& normal, double spacing, double /*area*/, double influenceRadius) {
         const double activation = spacing / distance;
         const double glancing = direction.dot(normal);
         return activation * activation + (glancing * glancing + 0.5) * (1.0 - distance / influenceRadius);

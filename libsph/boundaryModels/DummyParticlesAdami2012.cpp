@@ -1,5 +1,6 @@
 #include "boundaryModels/DummyParticlesAdami2012.hpp"
 
+#include "boundaryModels/WallPressureExtrapolation.hpp"
 #include "physics/FluidSystem.hpp"
 
 #include <cmath>
@@ -36,19 +37,16 @@ void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t
             const double pMin = clampNegativePressure_ ? eos.p0 : -std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static)
             for (std::size_t w = begin; w < end; ++w) {
-                double weight = 0.0, pressureSum = 0.0;
-                Vec<D> densityMoment = Vec<D>::Zero(), velocitySum = Vec<D>::Zero();
+                WallPressureExtrapolation<D> extrapolation;
+                Vec<D> velocitySum = Vec<D>::Zero();
                 cells.forEachNeighbour(xWall[w], radius, [&](std::uint32_t f, const Vec<D>& r, double r2) {
                     const double W = kernel.value(std::sqrt(r2));
-                    weight += W;
-                    pressureSum += pFluid[f] * W;
-                    densityMoment += (rhoFluid[f] * W) * r;
+                    extrapolation.add(W, pFluid[f], rhoFluid[f], r);
                     velocitySum += W * vFluid[f];
                 });
-                if (weight > 0.0) {
-                    const Vec<D> relative = aWall ? Vec<D>(gravity - aWall[w]) : gravity;
-                    pWall[w] = std::max((pressureSum + relative.dot(densityMoment)) / weight, pMin);
-                    const Vec<D> smoothed = velocitySum / weight;
+                if (extrapolation.weight > 0.0) {
+                    pWall[w] = std::max(extrapolation.pressure(aWall ? Vec<D>(gravity - aWall[w]) : gravity), pMin);
+                    const Vec<D> smoothed = velocitySum / extrapolation.weight;
                     if (vViscous) vViscous[w] = noSlip_ ? Vec<D>(2.0 * vWall[w] - smoothed) : smoothed;
                 } else {
                     pWall[w] = eos.p0;

@@ -12,6 +12,8 @@
 
 #include "boundaryModels/BoundaryModel.hpp"
 
+#include <cmath>
+
 namespace sph {
 
 template <int D>
@@ -20,6 +22,8 @@ public:
     explicit DummyParticlesAdami2012(const Dictionary& dict);
 
     bool actsThroughWallParticles() const override { return true; }
+    // The first fluid row sits dx/2 from the wall surface, so the layers must reach support - dx/2 behind it.
+    int minimumLayers(double support, double dx) const override { return static_cast<int>(std::ceil(support / dx - 0.5 - 1e-9)); }
     std::string describe() const override;
     void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
 

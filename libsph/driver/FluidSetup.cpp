@@ -51,10 +51,39 @@ void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& 
         for (std::size_t i = 0; i < field.values.size(); ++i) {
             if (!std::isfinite(field.values[i])) reject(i, fmt::format("a non-finite {}", name));
             if ((name == "mass" || name == "density") && !(field.values[i] > 0.0)) reject(i, fmt::format("{} {:g}, not positive", name, field.values[i]));
+            if (name == "area" && field.values[i] < 0.0) reject(i, fmt::format("area {:g}, negative", field.values[i]));
         }
     for (const auto& [name, field] : set.vectors())
         for (std::size_t i = 0; i < field.values.size(); ++i)
             if (!field.values[i].allFinite()) reject(i, fmt::format("a non-finite {}", name));
+}
+
+// Each patch's layers of wall particles (the wall field `layer`) against what its model needs.
+template <int D>
+void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDict, const std::vector<std::string>& patchNames,
+                       const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support, double dx) {
+    if (!walls.hasInteger("layer")) return;
+    std::vector<int> layers(patchNames.size(), 0);
+    const auto& patch = walls.integer("patch");
+    const auto& layer = walls.integer("layer");
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+        int& most = layers[static_cast<std::size_t>(patch[w])];
+        most = std::max(most, layer[w] + 1);
+    }
+    for (std::size_t p = 0; p < patchNames.size(); ++p) {
+        const Dictionary& patchDict = boundaryDict.subDict(patchNames[p]);
+        const std::string type = patchDict.get<std::string>("type");
+        const int needed = models[p]->minimumLayers(support, dx);
+        if (!models[p]->actsThroughWallParticles() && layers[p] > 1)
+            patchDict.fail("type", fmt::format("'{}' acts from one layer of wall particles on the wall surface, but patch '{}' has {} layers; "
+                                               "generate it with layers 1; firstLayerOffset 0; in system/generateParticlesDict",
+                                               type, patchNames[p], layers[p]));
+        if (layers[p] < needed)
+            patchDict.fail("type", fmt::format("'{}' needs at least {} layers of wall particles to fill the kernel support ({:g} = {:g} dx) behind "
+                                               "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict, "
+                                               "or choose a wall-force model (deficiencyCorrection) on one layer",
+                                               type, needed, support, support / dx, patchNames[p], layers[p], needed));
+    }
 }
 
 }  // namespace
@@ -145,6 +174,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         const Dictionary& patchDict = boundaryDict.subDict(name);
         boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
+    requireWallLayout(walls, boundaryDict, setup.patchNames, boundaryModels, std::visit([](const auto& k) { return k.supportRadius(); }, kernel), dx);
     // Wall-particle patches first (they enter the kernel sums), then wall-force patches.
     const auto rank = [&](int patch) {
         return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);

@@ -8,6 +8,7 @@
 #include "functionObjects/PatchForces.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/SurgeFront.hpp"
+#include "functionObjects/WallPenetrations.hpp"
 
 namespace sph {
 
@@ -62,6 +63,7 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                              interval}});
     add<PatchForces<D>>(registry, "forces", {"force of the fluid on wall-particle patches, over time", "", {{"patches", "", "(name ...)"}, interval}});
     add<FieldTotals<D>>(registry, "fieldTotals", {"total mass, kinetic energy and momentum, over time", "", {interval}});
+    add<WallPenetrations<D>>(registry, "wallPenetrations", {"fluid particles behind a wall's first layer, counted every step", "", {interval}});
     return registry;
 }
 

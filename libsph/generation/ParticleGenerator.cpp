@@ -63,7 +63,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
                 if (!insideDomain<D>(generated.positions[k], lo, hi))
                     throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
                                                                 fmt::join(generated.positions[k], " "), fmt::join(lo, " "), fmt::join(hi, " ")));
-                allWalls.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k]);
+                allWalls.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k], generated.areas[k]);
                 patchOf.push_back(static_cast<int>(patchNames.size()));
             }
             patchNames.push_back(name);
@@ -133,6 +133,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     walls.resize(allWalls.positions.size());
     auto& normal = walls.addVector("normal", Vec<D>::Zero());
     auto& spacing = walls.addScalar("spacing", dx);
+    auto& area = walls.addScalar("area", 0.0);
     auto& wallDensity = walls.addScalar("density", rho0);
     walls.addScalar("mass", rho0 * volume);
     auto& patch = walls.addInteger("patch", 0);
@@ -143,6 +144,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         walls.globalId[k] = static_cast<std::int64_t>(k);
         normal[k] = allWalls.normals[k];
         spacing[k] = allWalls.spacings[k];
+        area[k] = allWalls.areas[k];
         patch[k] = patchOf[k];
         layer[k] = allWalls.layers[k];
         wallDensity[k] = initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;

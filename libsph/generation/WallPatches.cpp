@@ -55,9 +55,17 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
             }
         }
         if (depth > 0 && !skip) {
-            // The lattice puts the first layer dx/2 outside the box; shift along the normal for other offsets.
-            const Vec<D> normal = (nearest - x).normalized();
-            walls.add(x + (0.5 - offset) * dx * normal, normal, dx, depth - 1);
+            // The lattice puts the first layer dx/2 outside the box; other offsets move it towards
+            // the box along each axis it lies outside (onto the edges and corners for offset 0).
+            const Vec<D> outside = nearest - x;
+            Vec<D> shift = Vec<D>::Zero();
+            int outsideAxes = 0;
+            for (int d = 0; d < D; ++d)
+                if (outside[d] != 0.0) {
+                    shift[d] = std::copysign((0.5 - offset) * dx, outside[d]);
+                    ++outsideAxes;
+                }
+            walls.add(x + shift, outside.normalized(), dx, depth - 1, outsideAxes == 1 ? std::pow(dx, D - 1) : 0.0);
         }
         int d = 0;
         for (; d < D; ++d) {
@@ -161,7 +169,8 @@ WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, do
             const std::size_t previous = (s + m - 1) % m;
             const Vec<2> bisector = (faceNormal[previous] + faceNormal[s]).normalized();
             const double previousSpacing = (points[s] - points[previous]).norm() / count[previous];
-            walls.add(points[s] - distance / bisector.dot(faceNormal[s]) * bisector, bisector, 0.5 * (previousSpacing + faceSpacing), layer);
+            const double vertexArea = (0.5 * previousSpacing * faceNormal[previous] + 0.5 * faceSpacing * faceNormal[s]).norm();
+            walls.add(points[s] - distance / bisector.dot(faceNormal[s]) * bisector, bisector, 0.5 * (previousSpacing + faceSpacing), layer, vertexArea);
             for (int k = 1; k < count[s]; ++k)
                 walls.add(points[s] + along * (static_cast<double>(k) / count[s]) - distance * faceNormal[s], faceNormal[s], faceSpacing, layer);
         }

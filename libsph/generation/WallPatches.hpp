@@ -13,7 +13,11 @@
 //   }
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
 // included; the normal points to the nearest point of the box (diagonal in corners); a
-// firstLayerOffset other than 1/2 shifts every particle along its normal.
+// firstLayerOffset other than 1/2 moves every particle by (1/2 - offset) dx towards the box
+// along each axis it lies outside, so with offset 0 the first layer's edge and corner
+// particles sit on the box's edges and corners. The face particles of a layer tile its faces,
+// so edge and corner particles stand for no area (a polygon vertex stands for half of each
+// adjacent side: its area vector is the sum of the two half-sides' area vectors).
 // box is a solid obstacle: its lattice `layers` deep inside each face, normals out of the
 // nearest face (diagonal at edges and corners); fluid regions leave out its inside, as they
 // do the inside of a circle or ellipse with fluidInside no.
@@ -25,6 +29,7 @@
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -36,15 +41,19 @@ struct WallPatchParticles {
     std::vector<Vec<D>> normals;
     std::vector<double> spacings;
     std::vector<int> layers;
+    std::vector<double> areas;  // the length (2D) or area (3D) of wall each particle stands for
     // For an obstacle (a closed curve with the fluid outside): true inside it, where no fluid goes.
     std::function<bool(const Vec<D>&)> solid;
 
-    void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer) {
+    void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer, double area) {
         positions.push_back(x);
         normals.push_back(n);
         spacings.push_back(spacing);
         layers.push_back(layer);
+        areas.push_back(area);
     }
+    // A particle on a smooth stretch of wall: it stands for spacing^(D-1).
+    void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer) { add(x, n, spacing, layer, std::pow(spacing, D - 1)); }
 };
 
 template <int D>

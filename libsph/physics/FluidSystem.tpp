@@ -48,6 +48,12 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     walls.addVector("velocity", Vec<D>::Zero(), false);
+    if (!walls.hasScalar("area") && walls.hasScalar("spacing")) {
+        // A state written before walls had areas: each particle stands for spacing^(D-1).
+        auto& area = walls.addScalar("area", 0.0);
+        const auto& spacing = walls.scalar("spacing");
+        for (std::size_t w = 0; w < walls.size(); ++w) area[w] = std::pow(spacing[w], D - 1);
+    }
     if (viscous()) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
     wallParticleEnd_ = patches.empty() ? walls.size() : 0;
     for (Patch<D>& patch : patches) {
@@ -123,6 +129,7 @@ void FluidSystem<D>::recomputeSurface(const Patch<D>& patch) {
         const auto& layer = walls.integer("layer");
         auto& normal = walls.vector("normal");
         auto& spacing = walls.scalar("spacing");
+        auto& area = walls.scalar("area");
         const auto& n0 = walls.vector("initialNormal");
         std::vector<std::size_t> surface;
         for (std::size_t w = patch.begin; w < patch.end; ++w)
@@ -141,7 +148,10 @@ void FluidSystem<D>::recomputeSurface(const Patch<D>& patch) {
             if (n.dot(n0[surface[k]]) < 0.0) n = -n;
             normal[surface[k]] = n;
             const double back = (x[surface[k]] - x[previous]).norm(), ahead = (x[next] - x[surface[k]]).norm();
-            spacing[surface[k]] = (previous == surface[k] || next == surface[k]) ? std::max(back, ahead) : 0.5 * (back + ahead);
+            const bool end = previous == surface[k] || next == surface[k];
+            spacing[surface[k]] = end ? std::max(back, ahead) : 0.5 * (back + ahead);
+            // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
+            area[surface[k]] = end ? spacing[surface[k]] : 0.5 * chord.norm();
         }
     }
 }

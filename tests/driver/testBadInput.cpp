@@ -58,10 +58,26 @@ TEST(BadInput, UnknownBoundaryModel) {
                                    "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    monaghanKajtar");
 }
 
-TEST(BadInput, CorrectionWithoutRepulsionPartner) {
+TEST(BadInput, CorrectionWithAnUnknownPartner) {
     const auto dir = copyCase("rectangularTank2D");
-    writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; calibration literal; }\n");
-    expectContains(failureOf(dir), "error: patch 'boundaryProperties/tank': deficiencyCorrection needs a repulsion partner to stop penetration");
+    writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; repulsion { type springs; } }\n");
+    expectContains(failureOf(dir), "error: unknown repulsion 'springs'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar\n    wallDistance");
+}
+
+TEST(BadInput, WallForceModelOnLayersOfWallParticles) {
+    // Dummy particles' four layers under a wall-force model: each layer would push the fluid.
+    const auto dir = copyCase("hydrostaticTank2D");
+    writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; }\n");
+    expectContains(failureOf(dir), "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'deficiencyCorrection' acts from one layer of wall "
+                                   "particles on the wall surface, but patch 'tank' has 4 layers; generate it with layers 1; firstLayerOffset 0;");
+}
+
+TEST(BadInput, DummyParticlesOnTooFewLayers) {
+    // The quintic spline's support 3.6 dx needs 4 layers behind the wall.
+    const auto dir = copyCase("hydrostaticTank2D");
+    replaceInFile(dir / "system/generateParticlesDict", "layers 4;", "layers 1;");
+    expectContains(failureOf(dir), "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'dummyParticles' needs at least 4 layers of wall "
+                                   "particles to fill the kernel support (0.072 = 3.6 dx) behind the wall, but patch 'tank' has 1;");
 }
 
 TEST(BadInput, PatchWithoutAModel) {
@@ -92,6 +108,7 @@ TEST(BadInput, BodyWithoutPositiveMass) {
 
 TEST(BadInput, FreeBodyNeedsAWallForceModel) {
     const auto dir = copyCase("sinkingCylinder2D");
+    replaceInFile(dir / "system/generateParticlesDict", "layers 1; firstLayerOffset 0;", "layers 3;");  // a layout dummy particles accept
     writeFile(dir / "constant/boundaryProperties",
               "tank { type dummyParticles; }\ncylinder { type dummyParticles; motion { type freeBody; mass 1; momentOfInertia 1; centreOfMass (0.5 0.3); } }\n");
     expectContains(failureOf(dir), "a free body takes its loads from a wall-force model");

@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
                     const sph::Vec<2> r = x - position[k];
                     const double distance = r.norm();
                     if (distance >= rInf || distance == 0.0) continue;
-                    w[k] = sph::DeficiencyWeightingJones2010::weight<2>(distance, sph::Vec<2>(r / distance), normal[k], s, rInf);
+                    w[k] = sph::DeficiencyWeightingJones2010::weight<2>(distance, sph::Vec<2>(r / distance), normal[k], s, s, rInf);
                     sum += w[k];
                 }
                 if (sum <= 0.0) continue;

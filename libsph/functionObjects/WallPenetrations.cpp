@@ -1,0 +1,56 @@
+#include "functionObjects/WallPenetrations.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace sph {
+
+template <int D>
+WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectContext<D>& context)
+    : out_(context.outputDirectory, "penetrations.dat", "# time behindWall mostSoFar") {}
+
+template <int D>
+std::size_t WallPenetrations<D>::count(const FluidSystem<D>& system) {
+    const std::size_t n = system.fluid.ownedCount();
+    const Vec<D>* x = system.fluid.position.data();
+    const Vec<D>* normal = system.walls.vector("normal").data();
+    const int* layer = system.walls.hasInteger("layer") ? system.walls.integer("layer").data() : nullptr;
+    // The wall-particle patches share one cell list; each wall-force patch has its own.
+    std::vector<const CellLinkedList<D>*> lists{&system.wallCells()};
+    for (const Patch<D>& patch : system.patches)
+        if (patch.cells) lists.push_back(&*patch.cells);
+    const double radius = system.supportRadius();
+    std::size_t behind = 0;
+#pragma omp parallel for schedule(static) reduction(+ : behind)
+    for (std::size_t i = 0; i < n; ++i) {
+        double nearest = std::numeric_limits<double>::infinity();
+        double side = 1.0;
+        for (const CellLinkedList<D>* list : lists)
+            list->forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                // Of equidistant particles the one it lies behind wins: the count ignores visiting order.
+                if ((layer && layer[j] != 0) || r2 > nearest) return;
+                if (r2 == nearest && r.dot(normal[j]) >= side) return;
+                nearest = r2;
+                side = r.dot(normal[j]);
+            });
+        if (side < 0.0) ++behind;
+    }
+    return behind;
+}
+
+template <int D>
+void WallPenetrations<D>::execute(const FluidSystem<D>& system, double t) {
+    const std::size_t behind = count(system);
+    most_ = std::max(most_, behind);
+    out_.append(fmt::format("{:.9g} {} {}", t, behind, most_));
+}
+
+template class WallPenetrations<1>;
+template class WallPenetrations<2>;
+template class WallPenetrations<3>;
+
+}  // namespace sph

@@ -1,0 +1,31 @@
+// wallPenetrations: fluid particles that have passed a wall, counted at every execution (every
+// step by default, so a leak between written times is seen), written to
+// postProcessing/<name>/<t0>/penetrations.dat: time, the count, and the largest count so far.
+// A fluid particle i has passed the wall when, for the nearest first-layer wall particle j
+// within the kernel support (any patch), (x_i - x_j) . n_j < 0: it lies behind the layer of
+// particles on (correction, repulsion) or nearest (dummy, dynamic) the wall surface.
+// Example (system/controlDict, functions):
+//   leaks { type wallPenetrations; }
+#pragma once
+
+#include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
+
+namespace sph {
+
+template <int D>
+class WallPenetrations : public FunctionObject<D> {
+public:
+    WallPenetrations(const Dictionary& dict, const FunctionObjectContext<D>& context);
+    std::string describe() const override { return "wallPenetrations: fluid particles behind a wall, every execution"; }
+    void execute(const FluidSystem<D>& system, double t) override;
+
+    // The number of fluid particles behind a wall in `system` now.
+    static std::size_t count(const FluidSystem<D>& system);
+
+private:
+    TimeSeriesFile out_;
+    std::size_t most_ = 0;
+};
+
+}  // namespace sph

@@ -1,0 +1,47 @@
+// The fraction of a kernel's support behind a surface, from the surface alone: by the
+// divergence theorem with the field F(r) = -Psi(|r|) r/|r|, Psi(r) = r^(1-D) int_r^R W(s) s^(D-1) ds
+// (div F = W away from the kernel's centre, F = 0 beyond the support R), the kernel's
+// integral over a region V not holding the centre x_i is the flux through its boundary:
+//   int_V W(|y - x_i|) dy = sum_j A_j Psi(|r_ij|) (r_ij . n_j) / |r_ij|,   r_ij = x_i - x_j,
+// over surface elements j of area A_j and unit normal n_j pointing out of V (into the fluid).
+// The deficiency correction takes V as the space behind the wall: the volume fraction of
+// virtual particles (1 - gamma_i of Ferrand et al. 2013, here from the wall particles' areas).
+// int_r^R W(s) s^(D-1) ds is tabulated once (Simpson's rule, 2048 intervals) and interpolated.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace sph {
+
+template <int D>
+class KernelOutsideFraction {
+public:
+    KernelOutsideFraction() = default;
+    template <class Kernel>
+    explicit KernelOutsideFraction(const Kernel& kernel) : support_(kernel.supportRadius()), step_(support_ / intervals) {
+        const auto integrand = [&](double s) { return kernel.value(s) * std::pow(s, D - 1); };
+        tail_.assign(intervals + 1, 0.0);
+        for (int k = intervals - 1; k >= 0; --k) {
+            const double a = k * step_, b = a + step_;
+            tail_[static_cast<std::size_t>(k)] =
+                tail_[static_cast<std::size_t>(k) + 1] + step_ / 6.0 * (integrand(a) + 4.0 * integrand(0.5 * (a + b)) + integrand(b));
+        }
+    }
+
+    // The flux term of one surface element: A_j Psi(|r|) (r . n_j)/|r|, with rDotN = r . n_j.
+    double element(double distance, double rDotN, double area) const {
+        const double u = std::min(distance / step_, static_cast<double>(intervals));
+        const auto k = std::min(static_cast<std::size_t>(u), static_cast<std::size_t>(intervals - 1));
+        const double tail = tail_[k] + (u - static_cast<double>(k)) * (tail_[k + 1] - tail_[k]);
+        return area * tail * rDotN / std::pow(distance, D);
+    }
+
+private:
+    static constexpr int intervals = 2048;
+    double support_ = 0.0, step_ = 1.0;
+    std::vector<double> tail_;
+};
+
+}  // namespace sph
