@@ -49,7 +49,7 @@ template <int D, class Weighting>
 DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName)
     : typeName_(std::move(typeName)), calibration_(readCalibration(dict)) {
     // The partner: wallDistance unless the case names a discrete force law.
-    penalty_ = WallDistancePenalty{0.05 * context.c0 * context.c0, context.dx, 0.5 * context.dx};
+    penalty_ = WallDistancePenalty{0.0, context.dx, 0.5 * context.dx, 1.0, context.c0};
     if (const Dictionary* repulsion = dict.findSubDict("repulsion")) {
         const std::string type = repulsion->get<std::string>("type");
         if (type != "wallDistance" && type != "monaghanKajtar" && type != "lennardJones")
@@ -58,9 +58,10 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
         if (type == "wallDistance") {
             penalty_.K = repulsion->getNonNegativeOrDefault("K", penalty_.K);
             penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
+            penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
         } else {
             repulsion_ = readRepulsionLaw(*repulsion, context);
-            penalty_.K = 0.0;
+            penalty_.K = penalty_.zeta = 0.0;
         }
     }
     const std::string direction = dict.getOrDefault<std::string>("direction", "normal");
@@ -99,7 +100,9 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
         text += fmt::format(", sample {}, temporalSmoothing {:g}",
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
     return text + ", repulsion " +
-           (repulsion_ ? sph::describe(*repulsion_) : fmt::format("wallDistance: K {:g}, distance {:g}", penalty_.K, penalty_.distance));
+           (repulsion_ ? sph::describe(*repulsion_)
+                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}", penalty_.K,
+                                     penalty_.zeta, penalty_.distance));
 }
 
 template <int D, class Weighting>
@@ -242,23 +245,23 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                 if (!(weightSum_[i] > 0.0)) continue;
                 const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
                 const double ownPressureTerm = WallPressure ? p[i] / (rho[i] * rho[i]) : 0.0;
-                Vec<D> sum = Vec<D>::Zero(), normalSum = Vec<D>::Zero();
-                double rate = 0.0, areaWeight = 0.0, distanceSum = 0.0;
+                Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
+                double rate = 0.0, areaWeight = 0.0;
                 patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
                     const double distance = std::sqrt(r2);
                     if (distance == 0.0) return;
                     const double W = kernel.value(distance);
                     const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
                     const double shape = W * w * inverseSum;
+                    const double approach = (v[i] - vWall[j]).dot(normal[j]);
                     areaWeight += W * area[j];
-                    normalSum += (W * area[j]) * normal[j];
-                    distanceSum += W * area[j] * r.dot(normal[j]);
+                    penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -approach)) * normal[j];
                     const Vec<D> d = directionOf(j, r, distance);
                     sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
                     rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
                     if constexpr (WallPressure) sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
                 });
-                a[i] += sum + penalty_.acceleration<D>(areaWeight, normalSum, distanceSum);
+                a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
                 correction[i] += sum;
                 if (densityRate) densityRate[i] += rate;
             }

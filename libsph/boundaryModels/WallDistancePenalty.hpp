@@ -1,16 +1,16 @@
 // The deficiency correction's default repulsion partner: a penalty on the distance to the
-// wall surface, blended over the wall particles within the kernel support, so that a fluid
-// particle sliding along a wall feels no bumps between wall particles (the discrete Lennard-
-// Jones and Monaghan-Kajtar laws with wall spacing dx drag a dam-break front measurably:
-// doc/boundaryFindings.md). For fluid particle i, over wall particles j with area A_j:
-//   d_i = sum_j A_j W_ij (r_ij . n_j) / sum_j A_j W_ij     (the distance to the wall's tangent planes)
-//   N_i = sum_j A_j W_ij n_j / |sum_j A_j W_ij n_j|
-//   a_i += (K / dx) max(0, 1 - d_i / d0)^2 N_i
+// wall particles' tangent planes, blended over the wall particles within the kernel support,
+// so that a fluid particle sliding along a wall feels no bumps between wall particles (the
+// discrete Lennard-Jones and Monaghan-Kajtar laws with wall spacing dx drag a dam-break front
+// measurably: doc/boundaryFindings.md). For fluid particle i, over wall particles j of area A_j:
+//   a_i += sum_j A_j W_ij g_ij^2 [K/dx + zeta (c0/d0) max(0, -(v_i - v_j) . n_j)] n_j / sum_j A_j W_ij
+//   g_ij = max(0, 1 - (r_ij . n_j) / d0)
 // zero beyond d0 (default dx/2, where the first fluid row starts), so fluid at rest on the wall
-// feels nothing; K (a squared velocity, default c0^2/20) stops a particle arriving at up to
-// sqrt(K/6) = 0.09 c0 within d0, above any speed a WCSPH flow is run at (|v| < c0/10).
+// feels nothing. The spring K (a squared velocity) holds what the correction does not; the
+// damper zeta stops particles closing on the wall without storing energy (a stiff spring alone
+// rings: the dam break's wall pressure noise grows with K, doc/boundaryFindings.md).
 // Example (constant/boundaryProperties, inside a deficiency-correction patch):
-//   repulsion { type wallDistance; K 245; distance 0.005; }
+//   repulsion { type wallDistance; K 5; damping 1; distance 0.005; }
 #pragma once
 
 #include "core/Vector.hpp"
@@ -23,12 +23,13 @@ struct WallDistancePenalty {
     double K;
     double dx;
     double distance;  // d0
+    double zeta;      // the damper's coefficient
+    double c0;
 
-    template <int D>
-    Vec<D> acceleration(double areaWeight, const Vec<D>& normalSum, double distanceSum) const {
-        if (!(areaWeight > 0.0) || !(normalSum.squaredNorm() > 0.0)) return Vec<D>::Zero();
-        const double gap = std::max(0.0, 1.0 - distanceSum / areaWeight / distance);
-        return (K / dx * gap * gap) * normalSum.normalized();
+    // One wall particle's term, times A_j W_ij: rDotN = r_ij . n_j, closingSpeed = -(v_i - v_j) . n_j.
+    double term(double rDotN, double closingSpeed) const {
+        const double gap = std::max(0.0, 1.0 - rDotN / distance);
+        return gap * gap * (K / dx + zeta * c0 / distance * std::max(0.0, closingSpeed));
     }
 };
 

@@ -176,8 +176,9 @@ TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) 
 
 TEST(DeficiencyCorrection, TheDefaultPartnerIsTheWallDistancePenaltyAndAnUnknownOneIsAnError) {
     const DeficiencyCorrection<2, DeficiencyWeightingJones2010> model(dictionary("type deficiencyCorrection;"), contextFor(0.065), "deficiencyCorrection");
-    // K = c0^2 / 20 with c0 = 10, acting within dx/2.
-    EXPECT_NE(model.describe().find("calibration wallPressure, direction normal, repulsion wallDistance: K 5, distance 0.025"), std::string::npos)
+    // A damper (zeta 1) and no spring, acting within dx/2.
+    EXPECT_NE(model.describe().find("calibration wallPressure, direction normal, repulsion wallDistance: K 0, damping 1, distance 0.025"),
+              std::string::npos)
         << model.describe();
     try {
         DeficiencyCorrection<2, DeficiencyWeightingJones2010>(dictionary("type deficiencyCorrection; repulsion { type hardWall; }"), contextFor(0.065),
@@ -330,7 +331,7 @@ TEST(DeficiencyCorrection, FluidMovingTowardsTheWallIsCompressedAsByVirtualParti
 
 TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstRowOn) {
     // One particle a quarter spacing above a long straight wall: every wall particle's tangent
-    // plane is at distance d = dx/4, so the penalty is (K/dx)(1 - d/d0)^2 n with d0 = dx/2.
+    // plane is at distance d = dx/4, so the spring is (K/dx)(1 - d/d0)^2 n with d0 = dx/2.
     const double h = 1.3 * dx;
     std::vector<Vec<2>> walls;
     for (int i = 0; i < 40; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
@@ -345,6 +346,17 @@ TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstR
         EXPECT_NEAR(penalty.y(), 3.0 / dx * gap * gap, 1e-12 * 3.0 / dx);
         EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * 3.0 / dx);
     }
+    // The damper alone, on a particle closing on the wall at 0.2: gap^2 zeta (c0/d0) 0.2, c0 = 10.
+    auto fluid = fluidSet<2>({Vec<2>(1.0, 0.25 * dx)});
+    fluid.vector("velocity")[0] = Vec<2>(0.3, -0.2);
+    auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                       std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                           dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 0; damping 2; }"), contextFor(h), "c"),
+                       h, Vec<2>(-1, -1), Vec<2>(3, 1));
+    s->evaluateRates(0.0);
+    const Vec<2> damper = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+    EXPECT_NEAR(damper.y(), 0.25 * 2.0 * 10.0 / (0.5 * dx) * 0.2, 1e-12 * 160.0);
+    EXPECT_NEAR(damper.x(), 0.0, 1e-12 * 160.0);
 }
 
 TEST(DeficiencyCorrection, NearestSampleTakesEveryTieSoALatticeWallGetsOneCoefficient) {

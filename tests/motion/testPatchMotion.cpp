@@ -38,6 +38,16 @@ TEST(PatchMotion, OscillationIsASinusoid) {
     expectConsistentKinematics<2>(motion, Vec<2>(1, 2), Vec<2>(0, 1), 0.3);
 }
 
+TEST(PatchMotion, OscillationWithAPhaseStartsWhereThePatchWasGenerated) {
+    // Phase pi/2: the surge A cos(omega t) of a tank displaced by A at rest: x0 + A (cos - 1).
+    const Oscillation<2> motion(dictionary("amplitude (0.032 0); frequency 0.5; phase 1.5707963267948966;"));
+    const auto start = motion.at(Vec<2>(1, 2), Vec<2>(0, 1), 0.0), half = motion.at(Vec<2>(1, 2), Vec<2>(0, 1), 1.0);
+    EXPECT_NEAR((start.position - Vec<2>(1, 2)).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(start.velocity.norm(), 0.0, 1e-15);
+    EXPECT_NEAR((half.position - Vec<2>(1 - 0.064, 2)).norm(), 0.0, 1e-15);
+    expectConsistentKinematics<2>(motion, Vec<2>(1, 2), Vec<2>(0, 1), 0.3);
+}
+
 TEST(PatchMotion, RotationTurnsPositionsAndNormals) {
     const Rotation motion(dictionary("centre (0 0); omega 0.5; amplitude 0.2; frequency 1;"));
     const double t = 1.0;  // theta = 0.5 + 0.2 sin(2 pi) = 0.5
