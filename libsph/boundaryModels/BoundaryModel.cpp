@@ -33,20 +33,22 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                      return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
                  });
     const std::vector<CoefficientDoc> correction{
-        {"repulsion", "", "{ type monaghanKajtar | lennardJones; ... }: the partner that stops penetration"},
+        {"repulsion", "{ type wallDistance; K 0; damping 1; distance dx/2; }",
+         "the partner that stops penetration: wallDistance (a damper on the closing speed within dx/2 of the wall), monaghanKajtar or lennardJones"},
         {"calibration", "wallPressure",
          "wallPressure (virtual particles at the extrapolated wall pressure), calibrated (the paper: cancel the sample's normal "
          "acceleration, divided by the blended kernel c_s . n_j) or literal (by W_sj)"},
         {"direction", "normal", "normal (n_j) or radial (r_ij/|r_ij|)"},
         {"sample", "{ type nearest; size 4; }", "calibrated and literal: or { type withinRadius; radius r; }"},
         {"temporalSmoothing", "1", "calibrated and literal: lambda of C_j <- (1 - lambda) C_j + lambda C_j^new, in (0, 1]"}};
-    registry.add("deficiencyCorrection", {"boundary deficiency correction, published weighting, with a repulsion partner",
+    registry.add("deficiencyCorrection", {"boundary deficiency correction, published weighting, one layer on the wall",
                                           "Jones, Yang & McCue-Weil, Ship Sci. & Tech. 4(7) (2010) 21", correction},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
                      return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingJones2010>>(dict, context, "deficiencyCorrection");
                  });
     registry.add("deficiencyCorrectionBoundaryIntegral",
-                 {"deficiency correction weighted by wall area vectors (divergence theorem), unnormalised", "sphkit; METHOD.md open improvements", correction},
+                 {"deficiency correction weighted by wall area vectors (divergence theorem), unnormalised; the one for 3D",
+                  "sphkit; METHOD.md open improvements", correction},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
                      return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingBoundaryIntegral>>(dict, context,
                                                                                                          "deficiencyCorrectionBoundaryIntegral");

@@ -22,14 +22,17 @@
 //           (ties at the k-th distance all taken), bounded to [2 C_j^p, 0], C_j^p = -2 p_j R_j / rho_j;
 //       literal: the same with sum_s W(|r_sj|) as denominator;
 //     calibrated and literal may be smoothed in time, C_j <- (1 - lambda) C_j + lambda C_j^new;
-//  3. a_i += sum_j P_ij W_ij wn_ij d_ij, and with continuity density the virtual particles'
-//     compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij;
-//  4. the repulsion partner (Monaghan & Kajtar 2009, Lennard-Jones) adds its force.
+//  3. a_i += sum_j P_ij W_ij wn_ij d_ij; with wallPressure also the virtual particles'
+//     pressure gradient along the wall, -(g - a_j) times the kernel's volume behind the wall
+//     (KernelOutsideFraction: sum_j A_j Psi(|r_ij|) (r_ij.n_j)/|r_ij|); with continuity density
+//     the virtual particles' compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij;
+//  4. the partner: the wallDistance damper (default, WallDistancePenalty) or a discrete law
+//     (Monaghan & Kajtar 2009, Lennard-Jones) adds its force.
 // Why wallPressure is the default (doc/boundaryFindings.md): the calibrated C_j makes the
 // sampled particles' normal acceleration equal the wall's, so it also cancels the real
 // deceleration of fluid arriving at a wall (impacts blow up) and has no bound where the
 // sample's kernel sum is far from complete; without the continuity term fluid pressing on a
-// wall never compresses. p_j is bounded by the fluid's pressure and the hydrostatic offset
+// wall never compresses; without the gradient along the wall fluid beside a side wall sinks. p_j is bounded by the fluid's pressure and the hydrostatic offset
 // over r_inf whatever the sample, and C_j^p = -2 p/rho reproduces the paper's uniform-pressure
 // calibration with the boundary-integral weighting.
 // The walls' pressure and density fields hold p_j and rho_j (ParaView, wall sensors), and
@@ -41,7 +44,7 @@
 //   tank
 //   {
 //       type              deficiencyCorrection;     // or deficiencyCorrectionBoundaryIntegral
-//       repulsion         { type monaghanKajtar; K 10; form shifted; }
+//       repulsion         { type wallDistance; K 0; damping 1; }   // or monaghanKajtar, lennardJones
 //       calibration       wallPressure;             // or calibrated, literal
 //       direction         normal;                   // or radial
 //       // calibrated and literal only:
