@@ -258,7 +258,7 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                     penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -approach)) * normal[j];
                     const Vec<D> d = directionOf(j, r, distance);
                     sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
-                    rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
+                    if constexpr (WallPressure) rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
                     if constexpr (WallPressure) sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
                 });
                 a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;

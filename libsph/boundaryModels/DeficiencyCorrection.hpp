@@ -24,8 +24,9 @@
 //     calibrated and literal may be smoothed in time, C_j <- (1 - lambda) C_j + lambda C_j^new;
 //  3. a_i += sum_j P_ij W_ij wn_ij d_ij; with wallPressure also the virtual particles'
 //     pressure gradient along the wall, -(g - a_j) times the kernel's volume behind the wall
-//     (KernelOutsideFraction: sum_j A_j Psi(|r_ij|) (r_ij.n_j)/|r_ij|); with continuity density
-//     the virtual particles' compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij;
+//     (KernelOutsideFraction: sum_j A_j Psi(|r_ij|) (r_ij.n_j)/|r_ij|), and with continuity
+//     density their compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij
+//     (the paper's calibration, which cancels accelerations, blew up a hydrostatic tank with it);
 //  4. the partner: the wallDistance damper (default, WallDistancePenalty) or a discrete law
 //     (Monaghan & Kajtar 2009, Lennard-Jones) adds its force.
 // Why wallPressure is the default (doc/boundaryFindings.md): the calibrated C_j makes the

@@ -54,7 +54,7 @@ TEST(CorrectionFlows, DamBreakImpactAtTheDownstreamCornerHoldsWithoutPenetration
     // damBreakWallPressure2D at H/dx = 20 (800 particles) to T = 4, through the first impact
     // (T = 2.4), where the paper's calibration blew up (T = 2.58 on c09449c). The pressure at P1
     // after the impact (T = 3-4, time-averaged) is 1.12 in the delta-SPH reference; measured 1.37
-    // here (1.35 at H/dx = 40; dummy particles 1.10): the correction over-reads the bottom corner,
+    // here (1.39 at H/dx = 40; dummy particles 1.06 and 1.09): it over-reads the bottom corner,
     // doc/boundaryFindings.md.
     const auto dir = copyCase("damBreakWallPressure2D");
     setEntry(dir / "system/generateParticlesDict", "spacing", "0.03");
