@@ -5,7 +5,8 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
 - uniform-pressure tanks (rectangularTank2D, ellipticalTank2D; one right-hand-side
   evaluation, wcsph -rates): RMS and max residual |a| of the fluid within r_inf of the wall,
   over the uncorrected RMS of the same particles, split into straight walls and corners, or
-  low- and high-curvature arcs;
+  low- and high-curvature arcs; and the boundary-integral weighting on 2:1 and 3:1 rectangles
+  and ellipses at r_inf/10 and r_inf/20;
 - hydrostatic tank (hydrostaticTank2D, to t = 2): wall pressure error (the fluid's pressure
   interpolated along the floor against rho g H, L2 and max over rho g H) and the centre line's,
   bottom gap (mean and spread of the lowest particle's height per column), residual kinetic
@@ -169,6 +170,47 @@ def add_leak_counter(directory):
     else:
         with open(path, "a") as f:
             f.write("\nfunctions\n{\n    leaks { type wallPenetrations; }\n}\n")
+
+
+def static_row(shape, extent, spacing, model, patch):
+    """The residual of one uniform-pressure evaluation in a rectangle or ellipse of the given
+    extent (length and height, or semi-axes), r_inf = 0.5 kept as dx changes."""
+    case = "rectangularTank2D" if shape == "rectangle" else "ellipticalTank2D"
+    directory = prepare(case, "%s-%gx%g-%g-%s" % (shape, extent[0], extent[1], spacing, model))
+    particles = os.path.join(directory, "system", "generateParticlesDict")
+    edit(particles, r"spacing\s+[0-9.e-]+;", "spacing     %g;" % spacing)
+    if shape == "rectangle":
+        L, H = extent
+        edit(particles, r"max \(4 2\)", "max (%g %g)" % (L, H))
+        edit(particles, r"tank\s*\{[^}]*\}", "tank { type polygon; points ((0 0) (%g 0) (%g %g) (0 %g)); layers 1; firstLayerOffset 0; }" % (L, L, H, H))
+        edit(particles, r"domain\s*\{[^}]*\}", "domain { min (-1 -1); max (%g %g); }" % (L + 1, H + 1))
+    else:
+        a, b = extent
+        for _ in range(2):
+            edit(particles, r"semiAxes \(2 1\)", "semiAxes (%g %g)" % (a, b))
+        edit(particles, r"domain\s*\{[^}]*\}", "domain { min (%g %g); max (%g %g); }" % (-a - 1, -b - 1, a + 1, b + 1))
+    edit(os.path.join(directory, "system", "sphSchemes"), r"hdx\s+[0-9.]+", "hdx %g" % (0.25 / spacing))
+    with open(os.path.join(directory, "constant", "boundaryProperties"), "w") as f:
+        f.write("tank { %s }\n" % patch)
+    generate(directory)
+    seconds, failure = run(directory, "-rates")
+    fluid, wall = tankRates.read_rates(directory)
+    residual = [math.hypot(*tankRates.residual(p)) for p, _, _ in tankRates.near_wall(fluid, wall, 0.5)]
+    return tankRates.rms(residual), max(residual), seconds
+
+
+def static_rows():
+    """Residual over the uncorrected RMS, corners and ends included, on 2:1 and 3:1 shapes."""
+    models = [("deficiencyCorrectionBoundaryIntegral, wallPressure", "type deficiencyCorrectionBoundaryIntegral; " + CORRECTION),
+              ("deficiencyCorrectionBoundaryIntegral, calibrated", "type deficiencyCorrectionBoundaryIntegral; calibration calibrated; " + CORRECTION)]
+    rows = []
+    for shape, extent in (("rectangle", (4, 2)), ("rectangle", (6, 2)), ("ellipse", (2, 1)), ("ellipse", (3, 1))):
+        for spacing in (0.05, 0.025):
+            reference, _, _ = static_row(shape, extent, spacing, "none", "type monaghanKajtar; K 1e-9;")
+            for name, patch in models:
+                rms, largest, seconds = static_row(shape, extent, spacing, name, patch)
+                rows.append(("%s %g:%g" % (shape, extent[0], extent[1]), round(0.5 / spacing), name, rms / reference, largest / reference, seconds))
+    return rows
 
 
 def hydrostatic_rows():
@@ -394,6 +436,7 @@ def main():
     if not os.path.exists(os.path.join(BIN, "wcsph")):
         raise SystemExit("boundarySuite.py: %s/wcsph not found; build first (./Allwmake)" % BIN)
     tanks = tank_rows()
+    statics = static_rows()
     hydrostatic = hydrostatic_rows()
     deforming = deforming_rows()
     flows = flow_rows()
@@ -415,6 +458,11 @@ def main():
              "|---|---|---|---|---|---|---|"]
     for case, region, name, n, r, m, s, failure in tanks:
         lines.append("| %s | %s | %s | %d | %.3f | %.3f | %.2f |" % (case, region, name, n, r, m, s))
+    lines += ["", "Every near-wall particle (corners and ends included) on 2:1 and 3:1 shapes, at r_inf/10 and r_inf/20 (r_inf = 0.5 "
+              "kept: hdx = 0.25/dx):", "",
+              "| shape | r_inf/dx | model | RMS / uncorrected RMS | max / uncorrected RMS | wall time [s] |", "|---|---|---|---|---|---|"]
+    for shape, resolution, name, r, m, seconds in statics:
+        lines.append("| %s | %d | %s | %.4f | %.3f | %.2f |" % (shape, resolution, name, r, m, seconds))
     lines += ["", "## Hydrostatic tank (setup A, t = 2)", "",
               "Wall pressure: the fluid's pressure interpolated (Shepard, fluid only) along the floor from x = 0.2 to 1.8 against "
               "rho g H, so even a perfect wall model shows the interpolation's offset of about dx/2 (1.1 %); centre line: along "
