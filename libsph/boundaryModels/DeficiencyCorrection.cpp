@@ -61,7 +61,6 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
             penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
         } else {
             repulsion_ = readRepulsionLaw(*repulsion, context);
-            penalty_.K = penalty_.zeta = 0.0;
         }
     }
     const std::string direction = dict.getOrDefault<std::string>("direction", "normal");
@@ -127,16 +126,20 @@ void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, st
 template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin,
                                                        std::size_t end, double t) {
-    const bool wallPressure = calibration_ == DeficiencyCalibration::WallPressure;
-    if (radialDirection_)
-        wallPressure ? correct<true, true>(system, patchCells, begin, end, t) : correct<true, false>(system, patchCells, begin, end, t);
-    else
-        wallPressure ? correct<false, true>(system, patchCells, begin, end, t) : correct<false, false>(system, patchCells, begin, end, t);
+    // The case's options as template parameters: the pair loop has no branch on them.
+    const auto select = [](bool option, auto&& next) { option ? next(std::true_type{}) : next(std::false_type{}); };
+    select(radialDirection_, [&](auto radial) {
+        select(calibration_ == DeficiencyCalibration::WallPressure, [&](auto wallPressure) {
+            select(!repulsion_, [&](auto distancePartner) {
+                correct<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(system, patchCells, begin, end, t);
+            });
+        });
+    });
     if (repulsion_) addRepulsion(system, patchCells, *repulsion_);
 }
 
 template <int D, class Weighting>
-template <bool Radial, bool WallPressure>
+template <bool Radial, bool WallPressure, bool DistancePartner>
 void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end,
                                                  double t) {
     // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
@@ -237,14 +240,14 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                     push_[j] = -C[j];
                 }
             }
-            // Pass 3: the blended correction, and the virtual particles' compression.
+            // Pass 3: the blended correction, the virtual particles' compression, the distance partner.
             const double* push = push_.data();
             const double* virtualDensity = virtualDensity_.data();
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
                 if (!(weightSum_[i] > 0.0)) continue;
                 const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
-                const double ownPressureTerm = WallPressure ? p[i] / (rho[i] * rho[i]) : 0.0;
+                const double ownPressureTerm = p[i] / (rho[i] * rho[i]);
                 Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
                 double rate = 0.0, areaWeight = 0.0;
                 patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
@@ -253,17 +256,26 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                     const double W = kernel.value(distance);
                     const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
                     const double shape = W * w * inverseSum;
-                    const double approach = (v[i] - vWall[j]).dot(normal[j]);
-                    areaWeight += W * area[j];
-                    penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -approach)) * normal[j];
                     const Vec<D> d = directionOf(j, r, distance);
-                    sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
-                    if constexpr (WallPressure) rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
-                    if constexpr (WallPressure) sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
+                    if constexpr (WallPressure) {
+                        sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
+                        rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
+                        sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
+                    } else {
+                        sum += (shape * push[j]) * d;
+                    }
+                    if constexpr (DistancePartner) {
+                        areaWeight += W * area[j];
+                        penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -(v[i] - vWall[j]).dot(normal[j]))) * normal[j];
+                    }
                 });
-                a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
+                if constexpr (DistancePartner)
+                    a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
+                else
+                    a[i] += sum;
                 correction[i] += sum;
-                if (densityRate) densityRate[i] += rate;
+                if constexpr (WallPressure)
+                    if (densityRate) densityRate[i] += rate;
             }
         },
         system.models().kernel, system.models().eos);

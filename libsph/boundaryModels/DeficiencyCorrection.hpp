@@ -60,6 +60,7 @@
 #include "kernels/KernelOutsideFraction.hpp"
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace sph {
@@ -79,11 +80,11 @@ public:
     void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t) override;
 
 private:
-    template <bool Radial, bool WallPressure>
+    template <bool Radial, bool WallPressure, bool DistancePartner>
     void correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t);
 
     std::string typeName_;
-    WallDistancePenalty penalty_;            // K = 0 when a discrete law is the partner
+    WallDistancePenalty penalty_;            // the partner unless a discrete law is named
     std::optional<RepulsionLaw> repulsion_;  // a discrete law (Monaghan-Kajtar, Lennard-Jones)
     DeficiencyCalibration calibration_;
     bool radialDirection_;

@@ -174,7 +174,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         const Dictionary& patchDict = boundaryDict.subDict(name);
         boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
-    requireWallLayout(walls, boundaryDict, setup.patchNames, boundaryModels, std::visit([](const auto& k) { return k.supportRadius(); }, kernel), dx);
+    const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
+    requireWallLayout(walls, boundaryDict, setup.patchNames, boundaryModels, support, dx);
     // Wall-particle patches first (they enter the kernel sums), then wall-force patches.
     const auto rank = [&](int patch) {
         return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);
@@ -219,7 +220,6 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
                std::isfinite(setup.maxDeltaT) ? fmt::format(", maxDeltaT {:g}", setup.maxDeltaT) : "",
                setup.fixedDeltaT > 0.0 ? fmt::format(", fixedDeltaT {:g}", setup.fixedDeltaT) : "");
 
-    const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
     for (int d = 0; d < D; ++d)
         if (periodic[static_cast<std::size_t>(d)] && domainMax[d] - domainMin[d] < 3.0 * support)
             throw FatalError(fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
