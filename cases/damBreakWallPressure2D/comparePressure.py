@@ -7,7 +7,7 @@ one), normalises as the reference (T = t sqrt(g/H), P = p/(rho g H)), averages b
 windows of Delta T = 0.1 from T = 2 to 7 (the raw impact peaks are acoustic and resolution
 dependent; the reference is digitised and steps back in time, so it is sorted first) and
 writes pressureError.txt (RMS of the window-mean difference per sensor, and the most fluid
-particles behind the wall at any step) and pressureComparison.png.
+particles behind the wall at any step) and pressureComparison.png into the first case given.
 Usage: comparePressure.py [case ...]
 """
 import glob
@@ -69,7 +69,7 @@ def main():
         name = os.path.basename(os.path.abspath(case))
         curves[name] = (times, values)
         lines.append("%s %s %d" % (name, " ".join("%.3f" % e for e in errors), most_behind_wall(case)))
-    with open(os.path.join(HERE, "pressureError.txt"), "w") as f:
+    with open(os.path.join(cases[0], "pressureError.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     try:
@@ -89,7 +89,7 @@ def main():
     axes[0].legend(fontsize=7)
     axes[-1].set_xlabel("t sqrt(g / H)")
     figure.tight_layout()
-    figure.savefig(os.path.join(HERE, "pressureComparison.png"), dpi=120)
+    figure.savefig(os.path.join(cases[0], "pressureComparison.png"), dpi=120)
 
 
 main()

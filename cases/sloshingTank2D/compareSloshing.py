@@ -7,7 +7,7 @@ For each written time (fluid.csv) the elevation is where the kernel-interpolated
 fraction sum_k V_k W(|x - x_k|) falls through 1/2 along the vertical through the probe (one
 splashed particle does not read as the level); eta = that height - 0.6 m. Writes
 sloshingError.txt (RMS and max |eta - eta_exp| over the experiment's samples, per case) and
-sloshingComparison.png.
+sloshingComparison.png into the first case given.
 Usage: compareSloshing.py [case ...]
 """
 import csv
@@ -75,7 +75,7 @@ def main():
         curves[name] = (times, etas)
         lines.append("%s %.4f %.4f %d" % (name, math.sqrt(sum(e * e for e in errors) / len(errors)), max(abs(e) for e in errors),
                                          max(leaks) if leaks else 0))
-    with open(os.path.join(HERE, "sloshingError.txt"), "w") as f:
+    with open(os.path.join(cases[0], "sloshingError.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     import matplotlib
@@ -89,7 +89,7 @@ def main():
     axis.set_ylabel("eta [m], 0.05 m from the left wall")
     axis.legend(fontsize=7)
     figure.tight_layout()
-    figure.savefig(os.path.join(HERE, "sloshingComparison.png"), dpi=120)
+    figure.savefig(os.path.join(cases[0], "sloshingComparison.png"), dpi=120)
 
 
 main()
