@@ -7,6 +7,11 @@
 #include <cstdlib>
 #include <regex>
 
+#include <cerrno>
+#include <csignal>
+#include <limits>
+#include <sys/types.h>
+
 #include <fmt/format.h>
 
 namespace sph {
@@ -52,11 +57,21 @@ TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const 
 }
 
 void removeIncompleteOutput(const std::filesystem::path& caseDirectory) {
-    static const std::regex leftover(R"(\..+\.(tmp|old)[0-9]+)");
+    // What the atomic writes name their temporaries: a time directory, or a file of a kind
+    // sphkit writes; anything else with a similar name is the user's and stays.
+    static const std::regex leftover(R"(\.([0-9.eE+-]+|.+\.(vtu|pvd|csv|dat))\.(tmp|old)([0-9]+))");
     std::error_code ec;
     std::vector<std::filesystem::path> found;
-    for (const auto& item : std::filesystem::recursive_directory_iterator(caseDirectory, ec))
-        if (std::regex_match(item.path().filename().string(), leftover)) found.push_back(item.path());
+    for (const auto& item : std::filesystem::recursive_directory_iterator(caseDirectory, ec)) {
+        std::smatch match;
+        const std::string name = item.path().filename().string();
+        if (!std::regex_match(name, match, leftover)) continue;
+        // A process that is still running (another solver on this case) is not interrupted.
+        const long writer = std::strtol(match[4].str().c_str(), nullptr, 10);
+        const bool writerGone = writer > 0 && writer <= std::numeric_limits<pid_t>::max() &&
+                                ::kill(static_cast<pid_t>(writer), 0) != 0 && errno == ESRCH;
+        if (writerGone) found.push_back(item.path());
+    }
     for (const auto& path : found) {
         fmt::print("Removing {}, left incomplete by an interrupted run\n", path.string());
         std::filesystem::remove_all(path, ec);

@@ -30,7 +30,8 @@ std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& case
 TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict);
 
 // Removes what a killed run left half-written (hidden temporaries ".<name>.tmp<pid>" and
-// ".<name>.old<pid>" of the atomic writes), naming each on the console.
+// ".<name>.old<pid>" of the atomic writes, for a time directory or a .vtu, .pvd, .csv or
+// .dat file, whose process <pid> no longer runs), naming each on the console.
 void removeIncompleteOutput(const std::filesystem::path& caseDirectory);
 
 // Reads <case>/<relative>, naming the case's file in every message.

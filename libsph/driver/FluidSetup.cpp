@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -58,6 +59,36 @@ void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& 
             if (!field.values[i].allFinite()) reject(i, fmt::format("a non-finite {}", name));
 }
 
+// Two particles with one id (a restart would mix up their histories) or two fluid particles at
+// one position (their pair has no direction); wall normals of unit length (a zero normal leaves
+// the wall without a side). Wall particles may coincide: patches that meet share a corner.
+template <int D>
+void requireDistinctParticles(const ParticleSet<D>& set, const std::filesystem::path& file, bool checkPositions) {
+    const auto reject = [&](const std::string& what) {
+        throw FatalError(fmt::format("error: particle file '{}': {} (a corrupt or hand-edited state file?)", file.string(), what));
+    };
+    std::vector<std::size_t> order(set.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return set.globalId[a] < set.globalId[b]; });
+    for (std::size_t k = 1; k < order.size(); ++k)
+        if (set.globalId[order[k]] == set.globalId[order[k - 1]])
+            reject(fmt::format("particles {} and {} (in file order) have the same id {}", order[k - 1], order[k], set.globalId[order[k]]));
+    const auto lexicographic = [&](std::size_t a, std::size_t b) {
+        return std::lexicographical_compare(set.position[a].data(), set.position[a].data() + D, set.position[b].data(), set.position[b].data() + D);
+    };
+    if (checkPositions) std::sort(order.begin(), order.end(), lexicographic);
+    for (std::size_t k = 1; checkPositions && k < order.size(); ++k)
+        if (set.position[order[k]] == set.position[order[k - 1]])
+            reject(fmt::format("particle ids {} and {} are at the same position ({:g})", set.globalId[order[k - 1]], set.globalId[order[k]],
+                               fmt::join(set.position[order[k]].data(), set.position[order[k]].data() + D, " ")));
+    if (!set.hasVector("normal")) return;
+    const auto& normal = set.vector("normal");
+    for (std::size_t i = 0; i < set.size(); ++i)
+        if (std::abs(normal[i].norm() - 1.0) > 1e-3)
+            reject(fmt::format("wall particle id {} has the normal ({:g}) of length {:g} (valid: a unit vector)", set.globalId[i],
+                               fmt::join(normal[i].data(), normal[i].data() + D, " "), normal[i].norm()));
+}
+
 // Each patch's layers of wall particles (the wall field `layer`) against what its model needs.
 template <int D>
 void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDict, const std::vector<std::string>& patchNames,
@@ -106,6 +137,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     requireFields(walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
     requireValidValues(fluid, fluidFile);
     requireValidValues(walls, wallFile);
+    requireDistinctParticles(fluid, fluidFile, true);
+    requireDistinctParticles(walls, wallFile, false);
     if (fluid.size() == 0)
         throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
     const double dx = setup.header.spacing;

@@ -9,9 +9,15 @@ namespace sph {
 
 namespace {
 
+// ".<name>.<tag><pid>", the name shortened where the whole would pass the 255 bytes a file
+// name may have (a case named with 250 characters writes <case>.pvd).
 std::filesystem::path hiddenSibling(const std::filesystem::path& path, const std::string& tag) {
+    constexpr std::size_t maxName = 255;
+    const std::string suffix = "." + tag + std::to_string(::getpid());
+    std::string name = path.filename().string();
+    if (name.size() + suffix.size() + 1 > maxName) name.resize(maxName - suffix.size() - 1);
     std::filesystem::path sibling = path;
-    sibling.replace_filename("." + path.filename().string() + "." + tag + std::to_string(::getpid()));
+    sibling.replace_filename("." + name + suffix);
     return sibling;
 }
 

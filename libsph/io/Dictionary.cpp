@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -12,6 +13,10 @@ namespace sph {
 namespace {
 
 constexpr int maxIncludeDepth = 32;
+// Limits that turn a runaway input into a message: nesting deeper than any case needs would
+// overflow the parser's stack, and macros that double at every level would fill the memory.
+constexpr int maxNestingDepth = 100;
+constexpr std::size_t maxTokens = 2'000'000;
 
 bool isPunctuation(char c) { return c == '{' || c == '}' || c == '(' || c == ')' || c == ';' || c == '[' || c == ']'; }
 
@@ -22,7 +27,11 @@ public:
 
     std::vector<Token> run() {
         std::vector<Token> tokens;
-        while (skipBlanksAndComments()) tokens.push_back(next());
+        while (skipBlanksAndComments()) {
+            tokens.push_back(next());
+            if (tokens.size() > maxTokens)
+                throw FatalError(tokens.back().where, "more than " + std::to_string(maxTokens) + " tokens in one dictionary");
+        }
         return tokens;
     }
 
@@ -96,8 +105,13 @@ private:
         const char first = token.text.front();
         if (hasDigit && (std::isdigit(static_cast<unsigned char>(first)) || first == '-' || first == '+' || first == '.')) {
             char* end = nullptr;
+            errno = 0;
             const double value = std::strtod(token.text.c_str(), &end);
             if (end == token.text.c_str() + token.text.size()) {
+                // strtod reports overflow (and underflow) through errno and returns inf or 0.
+                if (errno == ERANGE && (std::isinf(value) || value == 0.0))
+                    throw FatalError(token.where, "number " + token.text +
+                                                      " is outside the range of a double (magnitudes 2.2e-308 to 1.8e308, or 0)");
                 token.kind = Token::Kind::Number;
                 token.number = value;
             }
@@ -121,6 +135,10 @@ std::string readFile(const std::filesystem::path& file) {
     // A device or pipe (an #include "/dev/zero") would never end.
     if (!std::filesystem::is_regular_file(file, ec))
         throw FatalError("error: cannot open dictionary '" + file.string() + "': not a regular file");
+    constexpr std::uintmax_t maxBytes = 16u << 20;
+    if (const std::uintmax_t bytes = std::filesystem::file_size(file, ec); !ec && bytes > maxBytes)
+        throw FatalError("error: cannot read dictionary '" + file.string() + "': it is " + std::to_string(bytes >> 20) +
+                         " MiB, more than the 16 MiB a dictionary may have (put tables in a .csv file)");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw FatalError("error: cannot open dictionary '" + file.string() + "': permission denied or unreadable");
     std::ostringstream contents;
@@ -131,9 +149,13 @@ std::string readFile(const std::filesystem::path& file) {
 // Recursive-descent parser over the token list of one file.
 class Parser {
 public:
-    Parser(std::vector<Token> tokens, std::filesystem::path baseDirectory, int includeDepth,
-           std::vector<const Dictionary*> scopes)
-        : tokens_(std::move(tokens)), base_(std::move(baseDirectory)), depth_(includeDepth), scopes_(std::move(scopes)) {}
+    // `tokenCount` counts every token and entry the file and its includes build, macros expanded.
+    Parser(std::vector<Token> tokens, std::filesystem::path baseDirectory, int includeDepth, int nesting,
+           std::vector<const Dictionary*> scopes, std::size_t& tokenCount)
+        : tokens_(std::move(tokens)), base_(std::move(baseDirectory)), depth_(includeDepth), nesting_(nesting),
+          scopes_(std::move(scopes)), tokenCount_(tokenCount) {
+        count(tokens_.size(), tokens_.empty() ? SourceLocation{} : tokens_.front().where);
+    }
 
     // Parses entries into `target` until end of input (topLevel) or a closing '}'.
     void parseBody(Dictionary& target, bool topLevel) {
@@ -166,6 +188,7 @@ public:
                 const Entry& source = resolveMacro(token);
                 if (!source.isDictionary())
                     throw FatalError(token.where, "'" + token.text + "' names a value, not a dictionary, so it cannot stand as an entry");
+                count(source.dictionary().tokenCount(), token.where);
                 target.merge(source.dictionary());
                 ++pos_;
                 if (pos_ < tokens_.size() && tokens_[pos_].text == ";" && tokens_[pos_].kind == Token::Kind::Punctuation) ++pos_;
@@ -196,7 +219,7 @@ private:
             throw FatalError(fileToken.where, std::string("#include \"") + fileToken.text + "\": " + e.what());
         }
         auto fileName = std::make_shared<const std::string>(file.lexically_normal().string());
-        Parser inner(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, scopes_);
+        Parser inner(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, nesting_, scopes_, tokenCount_);
         inner.scopes_.pop_back();  // the included text parses straight into `target`
         inner.parseBody(target, true);
     }
@@ -231,9 +254,13 @@ private:
         const Token& keyword = tokens_[pos_++];
         const std::string childName = target.name().empty() ? keyword.text : target.name() + "/" + keyword.text;
         if (pos_ < tokens_.size() && tokens_[pos_].kind == Token::Kind::Punctuation && tokens_[pos_].text == "{") {
+            if (nesting_ >= maxNestingDepth)
+                throw FatalError(tokens_[pos_].where, "dictionaries nested more than " + std::to_string(maxNestingDepth) + " deep");
             auto child = std::make_shared<Dictionary>(childName, tokens_[pos_].where);
             ++pos_;
+            ++nesting_;
             parseBody(*child, false);
+            --nesting_;
             target.add(Entry(keyword.text, keyword.where, child));
             return;
         }
@@ -271,11 +298,13 @@ private:
                     if (!value.empty() || pos_ >= tokens_.size() || tokens_[pos_].text != ";")
                         throw FatalError(token.where, "'" + token.text + "' names a dictionary and can only stand alone as a value");
                     ++pos_;
+                    count(source.dictionary().tokenCount(), token.where);
                     auto copy = std::make_shared<Dictionary>(childName, token.where);
                     copy->merge(source.dictionary());
                     target.add(Entry(keyword.text, keyword.where, copy));
                     return;
                 }
+                count(source.tokens().size(), token.where);
                 value.insert(value.end(), source.tokens().begin(), source.tokens().end());
                 continue;
             }
@@ -286,11 +315,20 @@ private:
         target.add(Entry(keyword.text, keyword.where, std::move(value)));
     }
 
+    void count(std::size_t added, const SourceLocation& where) {
+        tokenCount_ += added;
+        if (tokenCount_ > maxTokens)
+            throw FatalError(where, "the dictionary expands to more than " + std::to_string(maxTokens) +
+                                        " tokens (macros that copy each other at every level?)");
+    }
+
     std::vector<Token> tokens_;
     std::size_t pos_ = 0;
     std::filesystem::path base_;
     int depth_;
+    int nesting_;
     std::vector<const Dictionary*> scopes_;
+    std::size_t& tokenCount_;
 };
 
 std::string joinTokens(const std::vector<Token>& tokens) {
@@ -324,7 +362,8 @@ Dictionary Dictionary::fromFile(const std::filesystem::path& file, const std::st
     const std::string text = readFile(file);
     auto fileName = std::make_shared<const std::string>(file.lexically_normal().string());
     Dictionary dict(name.empty() ? file.filename().string() : name, SourceLocation{fileName, 0, 0});
-    Parser(Tokenizer(text, fileName).run(), file.parent_path(), 0, {}).parseBody(dict, true);
+    std::size_t tokenCount = 0;
+    Parser(Tokenizer(text, fileName).run(), file.parent_path(), 0, 0, {}, tokenCount).parseBody(dict, true);
     return dict;
 }
 
@@ -332,7 +371,8 @@ Dictionary Dictionary::fromString(const std::string& text, const std::string& so
                                   const std::filesystem::path& baseDirectory) {
     auto fileName = std::make_shared<const std::string>(sourceName);
     Dictionary dict(sourceName, SourceLocation{fileName, 0, 0});
-    Parser(Tokenizer(text, fileName).run(), baseDirectory, 0, {}).parseBody(dict, true);
+    std::size_t tokenCount = 0;
+    Parser(Tokenizer(text, fileName).run(), baseDirectory, 0, 0, {}, tokenCount).parseBody(dict, true);
     return dict;
 }
 
@@ -363,6 +403,12 @@ Entry* Dictionary::lookup(const std::string& keyword) const {
     for (Entry& e : entries_)
         if (e.keyword() == keyword) return &e;
     return nullptr;
+}
+
+std::size_t Dictionary::tokenCount() const {
+    std::size_t size = 0;
+    for (const Entry& e : entries_) size += 1 + (e.isDictionary() ? e.dictionary().tokenCount() : e.tokens().size());
+    return size;
 }
 
 bool Dictionary::found(const std::string& keyword) const { return lookup(keyword) != nullptr; }

@@ -63,6 +63,7 @@ public:
 
     bool found(const std::string& keyword) const;
     std::vector<std::string> keywords() const;
+    std::size_t tokenCount() const;  // entries and value tokens, sub-dictionaries included
     const Entry* findEntry(const std::string& keyword) const;  // marks it used; nullptr if absent
     const Entry& entry(const std::string& keyword) const;      // FatalError if absent
 

@@ -2,6 +2,7 @@
 
 #include "core/FatalError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/VtuLayout.hpp"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -52,6 +53,9 @@ std::string firstLine(const std::string& text) { return text.substr(0, text.find
 vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) throw FatalError("error: particle file '" + file.string() + "' does not exist");
+    checkVtuLayout(file);
+    // VTK's XML parser logs its errors itself; the reader's are collected and reported below.
+    vtkObject::GlobalWarningDisplayOff();
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     VtkErrors errors;
     reader->AddObserver(vtkCommand::ErrorEvent, errors.callback);

@@ -177,13 +177,36 @@ TEST(BadInput, NonFiniteOrNonPositiveStateValues) {
     expectContains(failureOf(dir, false), "has mass -1, not positive (a corrupt state file?)");
 }
 
+TEST(BadInput, DuplicateIdsCoincidentParticlesAndZeroNormals) {
+    // Each was accepted silently on c09449c (a zero normal left its wall particle without a side).
+    const auto dir = copyCase("damBreak2D");
+    sph::generateParticles(dir, true);
+    sph::StateHeader header, wallHeader;
+    const auto original = sph::readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
+    const auto walls = sph::readParticleFile<2>(dir / "0/walls.vtu", "walls", wallHeader);
+    auto fluid = original;
+    fluid.globalId[5] = fluid.globalId[2];
+    sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "'" + (dir / "0/fluid.vtu").string() + "': particles 2 and 5 (in file order) have the same id 2");
+    fluid = original;
+    fluid.position[9] = fluid.position[4];
+    sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
+    expectContains(failureOf(dir, false), "are at the same position (");
+    sph::writeParticleFile(dir / "0/fluid.vtu", original, header);
+    auto zeroNormal = walls;
+    zeroNormal.vector("normal")[3] = sph::Vec<2>::Zero();
+    sph::writeParticleFile(dir / "0/walls.vtu", zeroNormal, wallHeader);
+    expectContains(failureOf(dir, false), "wall particle id 3 has the normal (0 0) of length 0 (valid: a unit vector)");
+}
+
 TEST(BadInput, TruncatedStateFile) {
     // A state cut short (copied from a full disk by hand, say) reads as an error, not as fewer particles.
     const auto dir = copyCase("damBreak2D");
     sph::generateParticles(dir, true);
     const auto file = dir / "0/fluid.vtu";
     std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
-    expectContains(failureOf(dir, false), "error: particle file '" + file.string() + "' is not a readable VTK unstructured grid");
+    expectContains(failureOf(dir, false), "error: particle file '" + file.string() + "': array 'Points' (offset ");
+    expectContains(failureOf(dir, false), "bytes that run past the end of the file (a corrupt state file?)");
 }
 
 TEST(BadInput, CorruptFreeBodyRestartState) {

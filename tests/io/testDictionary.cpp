@@ -150,3 +150,35 @@ TEST(Dictionary, UnusedKeywordsAreReported) {
     EXPECT_NE(message.find("testDict:4:15: 'typo' in dictionary 'testDict/sub'"), std::string::npos) << message;
     EXPECT_EQ(message.find("FoamFile"), std::string::npos) << message;
 }
+
+TEST(Dictionary, DeepNestingIsAnErrorNotAStackOverflow) {
+    // 20,000 levels crashed the recursive parser (SIGSEGV); 100 is far beyond any case.
+    std::string deep;
+    for (int i = 0; i < 20000; ++i) deep += "a { ";
+    EXPECT_EQ(errorOf([&] { parse(deep); }), "testDict:1:403: error: dictionaries nested more than 100 deep");
+    std::string fine;
+    for (int i = 0; i < 100; ++i) fine += "a { ";
+    fine += "x 1;";
+    for (int i = 0; i < 100; ++i) fine += " }";
+    EXPECT_NO_THROW(parse(fine));
+}
+
+TEST(Dictionary, DoublingMacrosStopAtTheTokenLimit) {
+    // Each level copies the one before twice: 2^60 tokens if nothing stopped it.
+    std::string text = "m0 (1 2);";
+    for (int i = 1; i <= 60; ++i) text += " m" + std::to_string(i) + " ($m" + std::to_string(i - 1) + " $m" + std::to_string(i - 1) + ");";
+    EXPECT_NE(errorOf([&] { parse(text); }).find("error: the dictionary expands to more than 2000000 tokens"), std::string::npos);
+    std::string dictionaries = "d0 { x 1; }";
+    for (int i = 1; i <= 60; ++i)
+        dictionaries += " d" + std::to_string(i) + " { a $d" + std::to_string(i - 1) + "; b $d" + std::to_string(i - 1) + "; }";
+    EXPECT_NE(errorOf([&] { parse(dictionaries); }).find("error: the dictionary expands to more than 2000000 tokens"), std::string::npos);
+}
+
+TEST(Dictionary, NumberOutsideTheDoubleRangeIsAnError) {
+    // 1e400 was read as infinity and blamed later on whatever it produced.
+    EXPECT_EQ(errorOf([] { parse("rho0 1e400;"); }),
+              "testDict:1:6: error: number 1e400 is outside the range of a double (magnitudes 2.2e-308 to 1.8e308, or 0)");
+    EXPECT_NE(errorOf([] { parse("a -1e400;"); }), "");
+    EXPECT_NE(errorOf([] { parse("a 1e-400;"); }), "");
+    EXPECT_DOUBLE_EQ(parse("a 1e300; b 0; c 0e-5;").get<double>("a"), 1e300);
+}

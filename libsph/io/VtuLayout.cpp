@@ -1,0 +1,245 @@
+#include "io/VtuLayout.hpp"
+
+#include "core/FatalError.hpp"
+#include "core/MemoryBudget.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+namespace {
+
+struct XmlTag {
+    std::string name;  // "/Piece" for a closing tag
+    std::map<std::string, std::string> attributes;
+    bool selfClosing = false;
+};
+
+struct ArrayLayout {
+    std::string name, type, section;
+    std::uint64_t offset = 0;
+    std::optional<std::uint64_t> values;  // elements the header implies; none for strings and cell connectivity
+};
+
+class LayoutError {
+public:
+    explicit LayoutError(const std::filesystem::path& file) : file_(file.string()) {}
+    [[noreturn]] void operator()(const std::string& message) const {
+        throw FatalError("error: particle file '" + file_ + "': " + message + " (a corrupt state file?)");
+    }
+
+private:
+    std::string file_;
+};
+
+// The tags of the XML text, in order (comments and the <?xml ?> declaration skipped).
+std::vector<XmlTag> tagsOf(const std::string& text, const LayoutError& fail) {
+    std::vector<XmlTag> tags;
+    for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at)) {
+        const std::size_t end = text.find('>', at);
+        if (end == std::string::npos) fail("an XML tag is not closed by '>'");
+        std::string body = text.substr(at + 1, end - at - 1);
+        at = end + 1;
+        if (body.starts_with("?") || body.starts_with("!")) continue;
+        XmlTag tag;
+        if (!body.empty() && body.back() == '/') {
+            tag.selfClosing = true;
+            body.pop_back();
+        }
+        std::size_t pos = body.find_first_of(" \t\r\n");
+        tag.name = body.substr(0, pos);
+        while (pos != std::string::npos && pos < body.size()) {
+            const std::size_t nameStart = body.find_first_not_of(" \t\r\n", pos);
+            if (nameStart == std::string::npos) break;
+            const std::size_t equals = body.find('=', nameStart);
+            if (equals == std::string::npos || equals + 1 >= body.size() || body[equals + 1] != '"')
+                fail("the attributes of <" + tag.name + "> are not name=\"value\" pairs");
+            const std::size_t close = body.find('"', equals + 2);
+            if (close == std::string::npos) fail("an attribute of <" + tag.name + "> is not closed by '\"'");
+            std::string key = body.substr(nameStart, equals - nameStart);
+            while (!key.empty() && (key.back() == ' ' || key.back() == '\t')) key.pop_back();
+            tag.attributes[key] = body.substr(equals + 2, close - equals - 2);
+            pos = close + 1;
+        }
+        tags.push_back(std::move(tag));
+    }
+    return tags;
+}
+
+// A whole number >= 0 written in decimal digits only ("-5", "1e3" and "" are not).
+std::uint64_t countOf(const XmlTag& tag, const std::string& attribute, const LayoutError& fail, std::optional<std::uint64_t> fallback = {}) {
+    const auto found = tag.attributes.find(attribute);
+    if (found == tag.attributes.end()) {
+        if (fallback) return *fallback;
+        fail("<" + tag.name + "> has no " + attribute);
+    }
+    const std::string& text = found->second;
+    const bool digits = !text.empty() && text.size() <= 18 && text.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits) fail(attribute + "=\"" + text + "\" in <" + tag.name + "> is not a whole number >= 0");
+    return std::stoull(text);
+}
+
+std::uint64_t bytesOfType(const std::string& type) {
+    static const std::map<std::string, std::uint64_t> sizes{{"Int8", 1},    {"UInt8", 1},   {"Int16", 2},   {"UInt16", 2},
+                                                            {"Int32", 4},   {"UInt32", 4},  {"Int64", 8},   {"UInt64", 8},
+                                                            {"Float32", 4}, {"Float64", 8}, {"String", 1}};
+    const auto found = sizes.find(type);
+    return found == sizes.end() ? 0 : found->second;
+}
+
+struct FileHeader {
+    std::string xml;
+    std::uint64_t appendedStart = 0;  // the byte after '_'
+};
+
+FileHeader readXmlPart(const std::filesystem::path& file, std::uint64_t fileSize, const LayoutError& fail) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) fail("cannot be opened for reading");
+    // The XML part of any state file is a few kB; 1 MiB without the appended data is not one.
+    constexpr std::size_t maxXml = 1u << 20;
+    std::string text(static_cast<std::size_t>(std::min<std::uint64_t>(fileSize, maxXml)), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    const std::size_t appended = text.find("<AppendedData");
+    if (appended == std::string::npos) {
+        if (text.find("format=\"ascii\"") != std::string::npos || text.find("format=\"binary\"") != std::string::npos)
+            fail("its arrays are stored inline (format=\"ascii\" or \"binary\"); sphkit reads appended raw data, as it writes "
+                 "it (in ParaView: Save Data, Data Mode Appended, Encode Appended Data off)");
+        fail("has no <AppendedData> section within its first MiB (not a state file written by sphkit or ParaView?)");
+    }
+    const std::size_t tagEnd = text.find('>', appended);
+    // VTK takes the data to start after the first '_'; anything but blanks before it misleads it.
+    const std::size_t underscore = tagEnd == std::string::npos ? std::string::npos : text.find_first_not_of(" \t\r\n", tagEnd + 1);
+    if (underscore == std::string::npos || text[underscore] != '_')
+        fail("its <AppendedData> tag is not followed by '_' (and blanks only) before the data");
+    if (text.substr(appended, tagEnd - appended).find("encoding=\"raw\"") == std::string::npos)
+        fail("its appended data is not raw (encoding=\"base64\"?); sphkit reads raw appended data, as it writes it");
+    return {text.substr(0, tagEnd + 1), underscore + 1};
+}
+
+}  // namespace
+
+void checkVtuLayout(const std::filesystem::path& file) {
+    const LayoutError fail(file);
+    std::error_code ec;
+    const std::uint64_t fileSize = std::filesystem::file_size(file, ec);
+    if (ec) fail("cannot be read: " + ec.message());
+    const FileHeader header = readXmlPart(file, fileSize, fail);
+    const std::vector<XmlTag> tags = tagsOf(header.xml, fail);
+
+    const XmlTag* vtkFile = nullptr;
+    std::uint64_t points = 0, cells = 0, pieces = 0;
+    std::string section;
+    std::vector<ArrayLayout> arrays;
+    for (const XmlTag& tag : tags) {
+        if (tag.name == "VTKFile") {
+            vtkFile = &tag;
+        } else if (tag.name == "Piece") {
+            if (++pieces > 1) fail("has more than one <Piece>; sphkit writes one");
+            points = countOf(tag, "NumberOfPoints", fail);
+            cells = countOf(tag, "NumberOfCells", fail);
+        } else if (tag.name == "FieldData" || tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" ||
+                   tag.name == "Cells") {
+            if (!tag.selfClosing) section = tag.name;
+        } else if (tag.name.starts_with("/") && tag.name != "/DataArray" && tag.name != "/Array") {
+            section.clear();
+        } else if (tag.name == "DataArray" || tag.name == "Array") {
+            ArrayLayout array;
+            array.name = tag.attributes.contains("Name") ? tag.attributes.at("Name") : "(unnamed)";
+            array.type = tag.attributes.contains("type") ? tag.attributes.at("type") : "";
+            array.section = section;
+            if (bytesOfType(array.type) == 0) fail("array '" + array.name + "' has type \"" + array.type + "\", not a VTK data type");
+            const std::string format = tag.attributes.contains("format") ? tag.attributes.at("format") : "";
+            if (format != "appended")
+                fail("array '" + array.name + "' has format=\"" + format + "\"; sphkit reads appended raw data, as it writes it");
+            array.offset = countOf(tag, "offset", fail);
+            const std::uint64_t components = countOf(tag, "NumberOfComponents", fail, 1);
+            if (components == 0 || components > 1024)
+                fail("array '" + array.name + "' has NumberOfComponents=\"" + std::to_string(components) + "\" (valid: 1 to 1024)");
+            std::optional<std::uint64_t> tuples;
+            if (section == "FieldData") tuples = countOf(tag, "NumberOfTuples", fail);
+            if (section == "PointData" || section == "Points") tuples = points;
+            if (section == "CellData" || (section == "Cells" && array.name != "connectivity")) tuples = cells;
+            if (tuples && array.type != "String") {
+                if (*tuples > (std::uint64_t{1} << 40)) fail("array '" + array.name + "' claims " + std::to_string(*tuples) + " tuples");
+                array.values = *tuples * components;
+            }
+            arrays.push_back(std::move(array));
+        }
+    }
+    if (!vtkFile || !vtkFile->attributes.contains("type") || vtkFile->attributes.at("type") != "UnstructuredGrid")
+        fail("is not a VTK XML UnstructuredGrid (<VTKFile type=\"UnstructuredGrid\"> not found)");
+    if (pieces == 0) fail("has no <Piece>");
+    const auto attribute = [&](const std::string& name) {
+        const auto found = vtkFile->attributes.find(name);
+        return found == vtkFile->attributes.end() ? std::string() : found->second;
+    };
+    if (attribute("byte_order") != "LittleEndian") fail("byte_order=\"" + attribute("byte_order") + "\" (valid: LittleEndian)");
+    const std::string headerType = attribute("header_type").empty() ? "UInt32" : attribute("header_type");
+    if (headerType != "UInt32" && headerType != "UInt64") fail("header_type=\"" + headerType + "\" (valid: UInt32, UInt64)");
+    const std::string compressor = attribute("compressor");
+    if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
+        fail("compressor=\"" + compressor + "\" (valid: vtkZLibDataCompressor, or none)");
+    const std::uint64_t word = headerType == "UInt64" ? 8 : 4;
+
+    std::ifstream in(file, std::ios::binary);
+    const std::uint64_t appendedBytes = fileSize - header.appendedStart;
+    // Reads `count` header words at `at` bytes into the appended data (false if past the end).
+    const auto readWords = [&](std::uint64_t at, std::uint64_t count, std::vector<std::uint64_t>& words) {
+        if (at > appendedBytes || count > (appendedBytes - at) / word) return false;
+        words.assign(static_cast<std::size_t>(count), 0);
+        in.seekg(static_cast<std::streamoff>(header.appendedStart + at));
+        for (std::uint64_t& w : words) {
+            std::uint64_t value = 0;
+            in.read(reinterpret_cast<char*>(&value), static_cast<std::streamsize>(word));
+            w = value;
+        }
+        return static_cast<bool>(in);
+    };
+    double uncompressedTotal = 0.0;
+    for (const ArrayLayout& array : arrays) {
+        const std::string where = "array '" + array.name + "' (offset " + std::to_string(array.offset) + ")";
+        std::vector<std::uint64_t> words;
+        std::uint64_t dataStart = 0, stored = 0, uncompressed = 0;
+        if (compressor.empty()) {
+            if (!readWords(array.offset, 1, words)) fail(where + " starts past the end of the file");
+            dataStart = array.offset + word;
+            stored = uncompressed = words[0];
+        } else {
+            if (!readWords(array.offset, 3, words)) fail(where + " starts past the end of the file");
+            const std::uint64_t blocks = words[0], blockSize = words[1], lastBlock = words[2];
+            if (blocks > 0 && (blockSize == 0 || lastBlock > blockSize))
+                fail(where + " has a compression header of " + std::to_string(blocks) + " blocks of " + std::to_string(blockSize) +
+                     " bytes, the last " + std::to_string(lastBlock) + ": not a valid one");
+            std::vector<std::uint64_t> sizes;
+            if (!readWords(array.offset + 3 * word, blocks, sizes))
+                fail(where + " claims " + std::to_string(blocks) + " compressed blocks, more than the file holds");
+            dataStart = array.offset + (3 + blocks) * word;
+            for (std::uint64_t size : sizes) {
+                if (size > appendedBytes) fail(where + " has a compressed block of " + std::to_string(size) + " bytes, more than the file holds");
+                stored += size;
+            }
+            uncompressed = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastBlock == 0 ? blockSize : lastBlock);
+            // zlib compresses by at most about 1032:1 (deflate's longest match per 2 bits).
+            if (blocks > 0 && (blockSize > (std::uint64_t{1} << 40) || uncompressed / 1032 > stored + 64 * blocks))
+                fail(where + " claims " + std::to_string(uncompressed) + " bytes from " + std::to_string(stored) +
+                     " compressed ones, more than zlib can compress");
+        }
+        if (dataStart > appendedBytes || stored > appendedBytes - dataStart)
+            fail(where + " holds " + std::to_string(stored) + " bytes that run past the end of the file");
+        const std::uint64_t elementBytes = bytesOfType(array.type);
+        if (array.values && uncompressed != *array.values * elementBytes)
+            fail(where + " holds " + std::to_string(uncompressed) + " bytes, but the header implies " + std::to_string(*array.values) +
+                 " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
+        uncompressedTotal += static_cast<double>(uncompressed);
+    }
+    requireMemory(2.0 * uncompressedTotal, "reading particle file '" + file.string() + "'");
+}
+
+}  // namespace sph
