@@ -22,7 +22,7 @@ std::string caseName(const std::filesystem::path& caseDirectory) {
     return normal.filename().string();
 }
 
-std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory) {
+std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory, std::vector<std::filesystem::path>* withoutState) {
     std::vector<TimeDirectory> times;
     std::error_code ec;
     for (const auto& item : std::filesystem::directory_iterator(caseDirectory, ec)) {
@@ -31,15 +31,33 @@ std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& case
         char* end = nullptr;
         const double t = std::strtod(name.c_str(), &end);
         if (name.empty() || end != name.c_str() + name.size() || !std::isfinite(t)) continue;
-        if (!std::filesystem::exists(item.path() / "fluid.vtu")) continue;
+        if (!std::filesystem::exists(item.path() / "fluid.vtu")) {
+            if (withoutState) withoutState->push_back(item.path());
+            continue;
+        }
         times.push_back({t, item.path()});
     }
     std::sort(times.begin(), times.end(), [](const TimeDirectory& a, const TimeDirectory& b) { return a.time < b.time; });
     return times;
 }
 
+std::vector<TimeDirectory> timesAfter(const std::filesystem::path& caseDirectory, double time) {
+    std::vector<TimeDirectory> later = findTimeDirectories(caseDirectory);
+    std::erase_if(later, [&](const TimeDirectory& t) { return t.time <= time + 1e-9 * std::max(1.0, std::abs(time)); });
+    return later;
+}
+
+void removeTimeDirectories(const std::vector<TimeDirectory>& times) {
+    for (const TimeDirectory& t : times) {
+        fmt::print("Removing {}\n", t.path.string());
+        std::filesystem::remove_all(t.path);
+    }
+}
+
 TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict) {
-    const std::vector<TimeDirectory> times = findTimeDirectories(caseDirectory);
+    std::vector<std::filesystem::path> withoutState;
+    const std::vector<TimeDirectory> times = findTimeDirectories(caseDirectory, &withoutState);
+    for (const auto& skipped : withoutState) fmt::print("warning: skipping the time directory {}: it holds no fluid.vtu\n", skipped.string());
     if (times.empty())
         throw FatalError("error: case '" + caseDirectory.string() +
                          "' has no time directory with a fluid.vtu state; run generateParticles first to write 0/");

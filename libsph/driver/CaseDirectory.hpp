@@ -23,8 +23,16 @@ struct TimeDirectory {
 // The case's name: its directory's, also when given as "." or with a trailing slash.
 std::string caseName(const std::filesystem::path& caseDirectory);
 
-// Time directories holding a complete state (fluid.vtu), in increasing time.
-std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory);
+// Time directories holding a complete state (fluid.vtu), in increasing time; those named as a
+// time that hold no fluid.vtu are added to `withoutState` when given.
+std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory,
+                                               std::vector<std::filesystem::path>* withoutState = nullptr);
+
+// The time directories after `time`, in increasing time.
+std::vector<TimeDirectory> timesAfter(const std::filesystem::path& caseDirectory, double time);
+
+// Removes the given time directories, naming each on the console.
+void removeTimeDirectories(const std::vector<TimeDirectory>& times);
 
 // The time directory controlDict's startFrom/startTime selects (FatalError if there is none).
 TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict);

@@ -247,6 +247,10 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     setup.integrator = selectByType(makeTimeIntegratorRegistry<D>(), integratorDict, integratorDict);
     setup.integratorType = integratorDict.get<std::string>("type");
     setup.courant = timeIntegration.getPositiveOrDefault("courant", 0.2);
+    if (setup.courant > 1.0)
+        timeIntegration.fail("courant", fmt::format("must not exceed 1 (a step would let sound cross more than a smoothing length), found {:g}; "
+                                                    "0.1 to 0.4 is stable for every integrator",
+                                                    setup.courant));
     setup.maxDeltaT = timeIntegration.getPositiveOrDefault("maxDeltaT", std::numeric_limits<double>::infinity());
     setup.fixedDeltaT = timeIntegration.getPositiveOrDefault("fixedDeltaT", 0.0);
     fmt::print("Selecting time integrator {}: courant {:g}{}{}\n", setup.integrator->describe(), setup.courant,

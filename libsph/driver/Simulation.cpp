@@ -227,12 +227,23 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
 }  // namespace
 
-void runCase(const std::filesystem::path& caseDirectory, RunMode mode) {
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes) {
     if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
     const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
     controlDict.findEntry("application");  // informational, as in OpenFOAM
     if (mode == RunMode::TimeLoop) removeIncompleteOutput(caseDirectory);
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
+    if (const std::vector<TimeDirectory> later = timesAfter(caseDirectory, start.time); mode == RunMode::TimeLoop && !later.empty()) {
+        if (!overwriteLaterTimes) {
+            std::string names;
+            for (const TimeDirectory& t : later) names += " " + t.path.filename().string();
+            controlDict.fail("startFrom", fmt::format("the run starts at t = {:g}, but the case has later times (written by an earlier run):{}; "
+                                                      "the run would overwrite them. Start from latestTime, remove them, or run wcsph "
+                                                      "-overwrite to have them removed",
+                                                      start.time, names));
+        }
+        removeTimeDirectories(later);
+    }
     const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
     switch (dimension) {
 #ifdef SPHKIT_HAS_1D

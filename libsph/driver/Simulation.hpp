@@ -12,7 +12,9 @@ enum class RunMode {
     RatesOnly,  // evaluate the right-hand side once at the start time and write it to postProcessing/rates/<time>/
 };
 
-// Runs the case. Throws FatalError for bad input or a run that blows up.
-void runCase(const std::filesystem::path& caseDirectory, RunMode mode = RunMode::TimeLoop);
+// Runs the case. Throws FatalError for bad input or a run that blows up, and when times later
+// than the start time exist (startFrom startTime): the run would overwrite them, unless
+// `overwriteLaterTimes` (wcsph -overwrite), which removes them first.
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode = RunMode::TimeLoop, bool overwriteLaterTimes = false);
 
 }  // namespace sph

@@ -18,7 +18,10 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
       points_(dict.get<int>("points")),
       rho0_(context.rho0),
       directory_(context.outputDirectory) {
-    if (points_ < 2) dict.fail("points", "must be at least 2, found " + std::to_string(points_));
+    // Each point is a line of the written .csv: ten million is far past any plot.
+    constexpr int maxPoints = 10'000'000;
+    if (points_ < 2 || points_ > maxPoints)
+        dict.fail("points", "must be from 2 to " + std::to_string(maxPoints) + ", found " + std::to_string(points_));
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) hydrostatic_.emplace(*reference);
     std::filesystem::create_directories(directory_);
     if (const Dictionary* reference = dict.findSubDict("reference")) {

@@ -1,5 +1,6 @@
 #include "generation/FluidRegions.hpp"
 
+#include "core/MemoryBudget.hpp"
 #include "io/SelectByType.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +17,9 @@ int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo,
     if (!(whole >= 1.0) || std::abs(cells - whole) > 1e-6 * std::max(1.0, whole))
         dict.fail(keyword, fmt::format("the extent {:g} (from {:g} to {:g}) must be a positive whole number of spacings dx = {:g} (it is {:g} dx)",
                                        hi - lo, lo, hi, dx, cells));
+    if (whole > maxSpacingsAcross)
+        dict.fail(keyword, fmt::format("the extent {:g} is {:.3g} spacings dx = {:g} (at most {}): is the spacing a slip?", hi - lo, whole, dx,
+                                       maxSpacingsAcross));
     return static_cast<int>(whole);
 }
 
@@ -41,7 +45,10 @@ template <int D>
 std::vector<Vec<D>> fillBox(const Dictionary& region, double dx) {
     const Vec<D> lo = region.getVector<D>("min"), hi = region.getVector<D>("max");
     std::array<int, D> counts;
-    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(region, "max", lo[d], hi[d], dx);
+    double particles = 1.0;
+    for (int d = 0; d < D; ++d) particles *= counts[static_cast<std::size_t>(d)] = wholeSpacings(region, "max", lo[d], hi[d], dx);
+    requireMemory(particles * solverBytesPerParticle,
+                  fmt::format("{}: the fluid box of {:.3g} particles at spacing {:g}", region.where().str(), particles, dx));
     std::vector<Vec<D>> points;
     forEachLatticePoint<D>(lo, counts, dx, [&](const Vec<D>& x) { points.push_back(x); });
     return points;
@@ -50,7 +57,7 @@ std::vector<Vec<D>> fillBox(const Dictionary& region, double dx) {
 // Lattice points of the whole domain for which `inside` holds.
 template <int D>
 std::vector<Vec<D>> fillShape(double dx, const Vec<D>& domainMin, const Vec<D>& domainMax, const std::function<bool(const Vec<D>&)>& inside) {
-    std::array<int, D> counts;
+    std::array<int, D> counts;  // the domain's spacings, checked by the generator to fit an int
     for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = static_cast<int>(std::floor((domainMax[d] - domainMin[d]) / dx));
     std::vector<Vec<D>> points;
     forEachLatticePoint<D>(domainMin, counts, dx, [&](const Vec<D>& x) {

@@ -30,6 +30,12 @@ struct FluidRegionParticles {
 template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax);
 
+// What a particle costs the solver (its fields, the integrator's stages, its share of the
+// neighbour search): an estimate, high rather than low, to refuse a runaway size before allocating.
+constexpr double solverBytesPerParticle = 1024.0;
+// Lattice indices are ints: no extent may span more spacings.
+constexpr int maxSpacingsAcross = 2147483647;
+
 // Number of whole spacings in [lo, hi]; FatalError naming the keyword when it is not whole.
 int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
 

@@ -1,5 +1,7 @@
 #include "generation/ParticleGenerator.hpp"
 
+#include "core/MemoryBudget.hpp"
+
 #include "driver/CaseDirectory.hpp"
 #include "generation/FluidRegions.hpp"
 #include "generation/WallPatches.hpp"
@@ -22,6 +24,58 @@ bool insideDomain(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
     return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
 }
 
+// A warning when fluid particles [first, end) of a region lie beyond the box around every wall
+// particle, in a direction that is not periodic: fluid put beside the tank rather than in it
+// (not an error: walls may be obstacles in an open domain).
+template <int D>
+std::string outsideTheWalls(const std::string& region, const std::vector<Vec<D>>& fluid, std::size_t first, const std::vector<Vec<D>>& walls,
+                            const std::vector<double>& periodic, double dx) {
+    if (walls.empty()) return "";
+    Vec<D> lo = walls.front(), hi = walls.front();
+    for (const Vec<D>& w : walls) {
+        lo = lo.cwiseMin(w);
+        hi = hi.cwiseMax(w);
+    }
+    std::size_t outside = 0;
+    for (std::size_t i = first; i < fluid.size(); ++i)
+        for (int d = 0; d < D; ++d)
+            if ((periodic.empty() || periodic[static_cast<std::size_t>(d)] == 0.0) && (fluid[i][d] < lo[d] - 0.5 * dx || fluid[i][d] > hi[d] + 0.5 * dx)) {
+                ++outside;
+                break;
+            }
+    if (outside == 0) return "";
+    return fmt::format("fluid region '{}' has {} of its {} particles outside the box around the wall particles, from ({:g}) to ({:g}): "
+                       "is it outside the tank?",
+                       region, outside, fluid.size() - first, fmt::join(lo.data(), lo.data() + D, " "), fmt::join(hi.data(), hi.data() + D, " "));
+}
+
+// Two patches that lay most of their particles on each other: one patch listed twice under two
+// names (patches that meet share a corner or an edge, a small part of either).
+template <int D>
+void requireDistinctPatches(const Dictionary& boundaries, const std::vector<std::string>& patchNames, const std::vector<int>& patchOf,
+                            const std::vector<Vec<D>>& positions, const CellLinkedList<D>& cells, double dx) {
+    std::vector<std::size_t> total(patchNames.size(), 0);
+    std::vector<std::vector<std::size_t>> shared(patchNames.size(), std::vector<std::size_t>(patchNames.size(), 0));
+    for (std::size_t k = 0; k < positions.size(); ++k) {
+        const auto p = static_cast<std::size_t>(patchOf[k]);
+        ++total[p];
+        std::vector<bool> counted(patchNames.size(), false);
+        cells.forEachNeighbour(positions[k], 1e-6 * dx, [&](std::uint32_t j, const Vec<D>&, double) {
+            const auto q = static_cast<std::size_t>(patchOf[j]);
+            if (q < p && !counted[q]) {
+                counted[q] = true;
+                ++shared[p][q];
+            }
+        });
+    }
+    for (std::size_t p = 0; p < patchNames.size(); ++p)
+        for (std::size_t q = 0; q < p; ++q)
+            if (2 * shared[p][q] > total[p])
+                throw FatalError(boundaries.subDict(patchNames[p]).where(),
+                                 fmt::format("wall patch '{}' lays {} of its {} particles on those of patch '{}' (the same patch listed twice?)",
+                                             patchNames[p], shared[p][q], total[p], patchNames[q]));
+}
+
 template <int D>
 GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory) {
     const double dx = dict.getPositive("spacing");
@@ -29,6 +83,17 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const Vec<D> lo = domain.getVector<D>("min"), hi = domain.getVector<D>("max");
     for (int d = 0; d < D; ++d)
         if (!(hi[d] > lo[d])) domain.fail("max", fmt::format("must exceed min in every direction (direction {}: {:g} <= {:g})", d, hi[d], lo[d]));
+    // Before anything is allocated: the domain's lattice is walked by the shape fillers and
+    // covered by the generator's neighbour search (16 bytes a lattice point).
+    double latticePoints = 1.0;
+    for (int d = 0; d < D; ++d) {
+        const double across = (hi[d] - lo[d]) / dx;
+        if (!(across <= maxSpacingsAcross))
+            dict.fail("spacing", fmt::format("the domain is {:.3g} spacings of {:g} across in direction {} (at most {}): is the spacing a slip?",
+                                             across, dx, d, maxSpacingsAcross));
+        latticePoints *= across + 1.0;
+    }
+    requireMemory(16.0 * latticePoints, fmt::format("{}: spacing {:g} over the domain ({:.3g} lattice points)", dict.where().str(), dx, latticePoints));
     std::vector<double> periodic;
     if (domain.found("periodic")) {
         periodic.assign(static_cast<std::size_t>(D), 0.0);
@@ -72,6 +137,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     }
     CellLinkedList<D> wallCells(lo, hi, dx);
     wallCells.build(allWalls.positions);
+    if (boundaries) requireDistinctPatches(*boundaries, patchNames, patchOf, allWalls.positions, wallCells, dx);
 
     // Fluid regions.
     std::vector<Vec<D>> fluidPositions, fluidVelocities;
@@ -79,6 +145,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     std::vector<double> initialPressures;  // per particle, with initialPressure analytic
     const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
     std::size_t dropped = 0;
+    std::vector<std::string> warnings;
     const Dictionary& fluid = dict.subDict("fluid");
     for (const std::string& name : fluid.keywords()) {
         const Dictionary& region = fluid.subDict(name);
@@ -108,6 +175,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         }
         surfaceHeight.resize(fluidPositions.size(), top);
         if (fluidPositions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
+        if (const std::string outside = outsideTheWalls(name, fluidPositions, first, allWalls.positions, periodic, dx); !outside.empty())
+            warnings.push_back(outside);
     }
 
     const auto densityFor = [&](double p) { return std::visit([&](const auto& eos) { return eos.density(eos.p0 + p); }, properties.eos); };
@@ -163,7 +232,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     wallHeader.patchNames = patchNames;
     writeParticleFile(outputDirectory / "walls.vtu", walls, wallHeader);
     writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
-    return {D, fluidSet.size(), walls.size(), dropped};
+    return {D, fluidSet.size(), walls.size(), dropped, warnings};
 }
 
 }  // namespace
@@ -174,12 +243,16 @@ GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, 
     if (!overwrite && std::filesystem::exists(output / "fluid.vtu"))
         throw FatalError("error: '" + (output / "fluid.vtu").string() + "' exists; remove it (./Allclean) or pass -overwrite");
     const int dimension = dict.get<int>("dimension");
+    GenerationSummary summary;
     switch (dimension) {
-        case 1: return generate<1>(caseDirectory, dict, output);
-        case 2: return generate<2>(caseDirectory, dict, output);
-        case 3: return generate<3>(caseDirectory, dict, output);
+        case 1: summary = generate<1>(caseDirectory, dict, output); break;
+        case 2: summary = generate<2>(caseDirectory, dict, output); break;
+        case 3: summary = generate<3>(caseDirectory, dict, output); break;
         default: dict.fail("dimension", fmt::format("must be 1, 2 or 3, found {}", dimension));
     }
+    // The later times of the state just replaced: the solver would resume from them.
+    if (overwrite) removeTimeDirectories(timesAfter(caseDirectory, 0.0));
+    return summary;
 }
 
 }  // namespace sph

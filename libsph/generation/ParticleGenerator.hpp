@@ -14,17 +14,21 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace sph {
 
 struct GenerationSummary {
-    int dimension;
-    std::size_t fluidParticles;
-    std::size_t wallParticles;
-    std::size_t droppedFluidParticles;
+    int dimension = 0;
+    std::size_t fluidParticles = 0;
+    std::size_t wallParticles = 0;
+    std::size_t droppedFluidParticles = 0;
+    std::vector<std::string> warnings;  // what may be a mistake but can be meant (printed by generateParticles)
 };
 
-// Writes <case>/0/; refuses to replace an existing 0/fluid.vtu unless `overwrite`.
+// Writes <case>/0/; refuses to replace an existing 0/fluid.vtu unless `overwrite`, which also
+// removes the later times the solver wrote from the state replaced (it would resume from them).
 GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite);
 
 }  // namespace sph

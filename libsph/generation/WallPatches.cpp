@@ -225,7 +225,9 @@ template <int D>
 WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
     const std::string type = patch.get<std::string>("type");
     const int layers = patch.get<int>("layers");
-    if (layers < 1) patch.fail("layers", fmt::format("must be at least 1, found {}", layers));
+    // A kernel support needs a few layers; thousands would be a slip that fills the memory.
+    constexpr int maxLayers = 1000;
+    if (layers < 1 || layers > maxLayers) patch.fail("layers", fmt::format("must be from 1 to {}, found {}", maxLayers, layers));
     const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
     if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
     if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);

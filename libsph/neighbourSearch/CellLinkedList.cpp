@@ -1,5 +1,9 @@
 #include "neighbourSearch/CellLinkedList.hpp"
 
+#include "core/FatalError.hpp"
+#include "core/MemoryBudget.hpp"
+
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <cmath>
@@ -12,6 +16,15 @@ template <int D>
 CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, double radius, const std::array<bool, D>& periodic)
     : lower_(lower), periodic_(periodic) {
     const double cellSize = radius / reach;
+    // Cells are indexed by 32-bit integers and take 9 bytes each: a domain far larger than its
+    // radius (a spacing typed 1000 times too small) is refused before anything is allocated.
+    double cellCount = 1.0;
+    for (int d = 0; d < D; ++d) cellCount *= std::max(1.0, std::ceil((upper[d] - lower[d]) / cellSize));
+    if (!(cellCount < 4294967295.0))
+        throw FatalError(fmt::format("error: the domain from ({:g}) to ({:g}) would need {:.3g} neighbour-search cells of size {:g} "
+                                     "(at most 4294967294): the spacing is too small for the domain, or the domain too large",
+                                     fmt::join(lower.data(), lower.data() + D, " "), fmt::join(upper.data(), upper.data() + D, " "), cellCount, cellSize));
+    requireMemory(9.0 * cellCount, fmt::format("the neighbour search over the domain ({:.3g} cells of size {:g})", cellCount, cellSize));
     std::size_t cells = 1;
     for (int d = 0; d < D; ++d) {
         const auto dd = static_cast<std::size_t>(d);

@@ -23,6 +23,8 @@ Options:
   -rates          evaluate the right-hand side once at the start time (accelerations, density
                   rates, boundary corrections) and write it to postProcessing/rates/<time>/
                   as .vtu and .csv
+  -overwrite      with startFrom startTime: remove the times after the start time that an
+                  earlier run wrote (without it the solver refuses to overwrite them)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
@@ -36,6 +38,7 @@ See doc/userGuide.md and doc/reliability.md.
 int main(int argc, char** argv) {
     std::string caseDirectory = ".";
     sph::RunMode mode = sph::RunMode::TimeLoop;
+    bool overwrite = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-help" || arg == "--help" || arg == "-h") {
@@ -50,6 +53,10 @@ int main(int argc, char** argv) {
             mode = sph::RunMode::RatesOnly;
             continue;
         }
+        if (arg == "-overwrite") {
+            overwrite = true;
+            continue;
+        }
         if (arg == "-case" && i + 1 < argc) {
             caseDirectory = argv[++i];
             continue;
@@ -57,5 +64,5 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
     }
-    return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode); });
+    return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode, overwrite); });
 }

@@ -25,6 +25,15 @@ std::string failureOf(const std::filesystem::path& dir, bool generate = true) {
     return "";
 }
 
+// The dam break at dx = a/20 (800 fluid particles) to `endTime`, its 0/ generated.
+std::filesystem::path coarseDamBreak(const std::string& endTime) {
+    const auto dir = copyCase("damBreak2D");
+    setEntry(dir / "system/generateParticlesDict", "spacing", "0.0028575");
+    setEntry(dir / "system/controlDict", "endTime", endTime);
+    sph::generateParticles(dir, false);
+    return dir;
+}
+
 void expectContains(const std::string& message, const std::string& part) {
     EXPECT_NE(message.find(part), std::string::npos) << "message:\n" << message << "\nexpected to contain:\n" << part;
 }
@@ -366,4 +375,77 @@ TEST(BadInput, ReferenceWithDecreasingTimeStopsBeforeTheFirstStep) {
     expectContains(failureOf(dir), (dir / "martinMoyce1952Front.csv").string() + ":4: time 0.8 does not come after the previous row's 0.84");
     writeFile(dir / "martinMoyce1952Front.csv", "T,X\n0.41,1.11\n0.84,1.22\n");
     expectContains(failureOf(dir), "has no column 'Z'; its columns are: T, X");
+}
+
+TEST(BadInput, RunawaySizesAreRefusedBeforeAllocation) {
+    // On c09449c: spacing 1e-10 overflowed an int and generated 1 particle; smaller spacings,
+    // 1e8 layers and 2e9 sample points ran until the memory ran out.
+    auto dir = copyCase("damBreak2D", "tiny");
+    setEntry(dir / "system/generateParticlesDict", "spacing", "1e-10");
+    expectContains(failureOf(dir), "keyword 'spacing' in dictionary 'generateParticlesDict': the domain is 4.6e+09 spacings of 1e-10 across in direction 0 "
+                                   "(at most 2147483647): is the spacing a slip?");
+    dir = copyCase("damBreak2D", "small");
+    setEntry(dir / "system/generateParticlesDict", "spacing", "2e-6");
+    const std::string memory = failureOf(dir);
+    expectContains(memory, "spacing 2e-06 over the domain (2.65e+10 lattice points) would need 394 GiB of memory; this machine has");
+    dir = copyCase("damBreak2D", "layers");
+    replaceInFile(dir / "system/generateParticlesDict", "layers 3;", "layers 100000000;");
+    expectContains(failureOf(dir), "keyword 'layers' in dictionary 'generateParticlesDict/boundaries/tank': must be from 1 to 1000, found 100000000");
+    dir = copyCase("hydrostaticTank2D", "points");
+    setEntry(dir / "system/controlDict", "points", "2000000000");
+    expectContains(failureOf(dir), "keyword 'points' in dictionary 'controlDict/functions/");
+    expectContains(failureOf(dir), "must be from 2 to 10000000, found 2000000000");
+}
+
+TEST(BadInput, CourantNumberAboveOne) {
+    // Accepted silently on c09449c (and blew up some steps later).
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/timeIntegration", "courant     0.2;", "courant     10;");
+    expectContains(failureOf(dir), "keyword 'courant' in dictionary 'timeIntegration': must not exceed 1");
+}
+
+TEST(BadInput, WallPatchListedTwice) {
+    // Twice the wall particles on c09449c, each pair at one place.
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "open (yMax); }", "open (yMax); }\n    again { type boxWalls; min (0 0); max (0.40005 0.17145); layers 3; open (yMax); }");
+    expectContains(failureOf(dir), "wall patch 'again' lays 1578 of its 1578 particles on those of patch 'tank' (the same patch listed twice?)");
+}
+
+TEST(BadInput, FluidOutsideTheTankIsAWarning) {
+    // Meant at times (walls as obstacles in an open domain), so a warning that generateParticles prints.
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/generateParticlesDict", "column  { type box; min (0 0); max ($a 0.1143); }",
+                  "column  { type box; min (0 0); max ($a 0.1143); }\n    spill { type box; min (0.41 0); max (0.4242875 0.0142875); }");
+    const sph::GenerationSummary summary = sph::generateParticles(dir, true);
+    ASSERT_EQ(summary.warnings.size(), 1u);
+    expectContains(summary.warnings[0], "fluid region 'spill' has 100 of its 100 particles outside the box around the wall particles");
+    EXPECT_TRUE(sph::generateParticles(copyCase("damBreak2D", "inside"), true).warnings.empty());
+}
+
+TEST(BadInput, LaterTimesAreNotOverwrittenWithoutAFlag) {
+    // startFrom startTime overwrote the later times without a word on c09449c.
+    const auto dir = coarseDamBreak("0.02");
+    sph::runCase(dir);
+    ASSERT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));
+    std::ofstream(dir / "system/controlDict", std::ios::app) << "startFrom startTime;\nstartTime 0.01;\n";
+    expectContains(failureOf(dir, false), "the run starts at t = 0.01, but the case has later times (written by an earlier run): 0.02; the run would "
+                                          "overwrite them. Start from latestTime, remove them, or run wcsph -overwrite to have them removed");
+    EXPECT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));
+    sph::runCase(dir, sph::RunMode::TimeLoop, true);
+    EXPECT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));  // written again by this run
+    // generateParticles -overwrite replaces 0/ and removes what the solver wrote from the old 0/.
+    sph::generateParticles(dir, true);
+    EXPECT_FALSE(std::filesystem::exists(dir / "0.01"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "0.02"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "0/fluid.vtu"));
+}
+
+TEST(BadInput, EmptyTimeDirectoryIsAWarning) {
+    // Skipped without a word on c09449c: a user who copied a time without its files saw the run start elsewhere.
+    const auto dir = coarseDamBreak("0.01");
+    std::filesystem::create_directories(dir / "0.5");
+    ::testing::internal::CaptureStdout();
+    sph::runCase(dir);
+    const std::string log = ::testing::internal::GetCapturedStdout();
+    expectContains(log, "warning: skipping the time directory " + (dir / "0.5").string() + ": it holds no fluid.vtu");
 }

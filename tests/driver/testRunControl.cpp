@@ -135,3 +135,59 @@ TEST(RunControl, UnreadableDictionaryIsAClearError) {
     EXPECT_NE(log.find("error: cannot open dictionary '" + (dir / "system/sphSchemes").string() + "': permission denied or unreadable"), std::string::npos)
         << log;
 }
+
+TEST(RunControl, TheLogEndsWithTheError) {
+    // `wcsph > log` and `wcsph | tee log`: the error went to stderr only, or landed in the log
+    // above the output printed before it. Now stdout, a file of its own, ends with it too.
+    const auto dir = damBreak("0.02");
+    replaceInFile(dir / "system/timeIntegration", "courant     0.2;", "courant     10;");
+    const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
+    std::string executable = SPHKIT_WCSPH_EXECUTABLE, caseOption = "-case", caseDirectory = dir.string();
+    char* argv[] = {executable.data(), caseOption.data(), caseDirectory.data(), nullptr};
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666), STDOUT_FILENO);
+        dup2(open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666), STDERR_FILENO);
+        execv(executable.c_str(), argv);
+        _exit(127);
+    }
+    const int status = waitForExit(pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1);
+    const std::string log = readText(dir / "stdout"), errors = readText(dir / "stderr");
+    const std::string message = "keyword 'courant' in dictionary 'timeIntegration': must not exceed 1";
+    EXPECT_NE(errors.find(message), std::string::npos) << errors;
+    ASSERT_NE(log.find("Selecting"), std::string::npos) << log;
+    const std::size_t at = log.rfind(message);
+    ASSERT_NE(at, std::string::npos) << log;
+    EXPECT_GT(at, log.rfind("Selecting"));
+    EXPECT_EQ(log.find('\n', at), log.size() - 1) << log;  // the error's line is the last
+}
+
+TEST(RunControl, OnlyTheTemporariesOfEndedRunsAreRemoved) {
+    // The solver removed every `.<x>.tmp<digits>`, the user's own too, and a running solver's.
+    const auto dir = damBreak("0.01");
+    const pid_t ended = fork();
+    if (ended == 0) _exit(0);
+    waitForExit(ended);
+    const std::string gone = std::to_string(ended);
+    for (const std::string& name : std::vector<std::string>{".0.005.tmp" + gone, ".fluid.pvd.tmp" + gone, ".notes.tmp" + gone, ".0.005.tmp1"})
+        std::filesystem::create_directories(dir / name);
+    const int status = waitForExit(startSolver(dir));
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readText(dir / "log");
+    EXPECT_FALSE(std::filesystem::exists(dir / (".0.005.tmp" + gone)));  // a killed run's time directory
+    EXPECT_FALSE(std::filesystem::exists(dir / (".fluid.pvd.tmp" + gone)));
+    EXPECT_TRUE(std::filesystem::exists(dir / (".notes.tmp" + gone)));  // not a name sphkit writes
+    EXPECT_TRUE(std::filesystem::exists(dir / ".0.005.tmp1"));           // process 1 still runs
+}
+
+TEST(RunControl, ACaseNameOf250Characters) {
+    // The .pvd's temporary name passed the 255 bytes a file name may have on c09449c.
+    const auto source = damBreak("0.01");
+    const auto dir = source.parent_path() / std::string(250, 'c');
+    std::filesystem::remove_all(dir);
+    std::filesystem::rename(source, dir);
+    const int status = waitForExit(startSolver(dir));
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readText(dir / "log");
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string(250, 'c') + ".pvd")));
+    std::filesystem::remove_all(dir);
+}

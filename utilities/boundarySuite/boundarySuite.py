@@ -257,7 +257,7 @@ def deforming_rows():
     """Runs deformingTank2D's Allrun (both variants) and reads its comparison."""
     case = os.path.join(ROOT, "cases", "deformingTank2D")
     start = time.time()
-    subprocess.run([os.path.join(case, "Allrun")], check=True, capture_output=True, env=dict(os.environ, SPHKIT_BIN=BIN))
+    subprocess.run([os.path.join(case, "Allrun")], check=True, capture_output=True, env=dict(os.environ, SPHKIT_BIN=os.path.abspath(BIN)))
     seconds = time.time() - start
     results = {}
     with open(os.path.join(case, "variantComparison.csv")) as f:
@@ -270,7 +270,7 @@ def deforming_rows():
         clumped = sum(float(v["fraction_below_0.75dx"]) for v in values) / len(values)
         penetrations = max(int(v["penetrations"]) for v in values)
         rows.append((name, noise, closest, clumped, penetrations, seconds / 2))
-    subprocess.run([os.path.join(case, "Allclean")], check=True)
+    subprocess.run([os.path.join(case, "Allclean")], check=True, env=dict(os.environ, SPHKIT_BIN=os.path.abspath(BIN)))
     return rows
 
 

@@ -45,5 +45,6 @@ int main(int argc, char** argv) {
                    summary.wallParticles, caseDirectory);
         if (summary.droppedFluidParticles > 0) fmt::print(" ({} fluid particles overlapping walls dropped)", summary.droppedFluidParticles);
         fmt::print("\n");
+        for (const std::string& warning : summary.warnings) fmt::print("warning: {}\n", warning);
     });
 }
