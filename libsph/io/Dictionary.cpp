@@ -184,8 +184,10 @@ public:
             if (token.kind == Token::Kind::Word && token.text.starts_with("#"))
                 throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include)");
             if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
-                // `$dict` inside a dictionary merges that dictionary's entries here.
-                const Entry& source = resolveMacro(token);
+                // `$dict` inside a dictionary merges that dictionary's entries here. A copy of the
+                // entry keeps its dictionary alive while the merge replaces entries of the same
+                // name (`$type` in a dictionary with a sub-dictionary `type`: found by fuzzing).
+                const Entry source = resolveMacro(token);
                 if (!source.isDictionary())
                     throw FatalError(token.where, "'" + token.text + "' names a value, not a dictionary, so it cannot stand as an entry");
                 count(source.dictionary().tokenCount(), token.where);
@@ -292,7 +294,7 @@ private:
                 }
             }
             if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
-                const Entry& source = resolveMacro(token);
+                const Entry source = resolveMacro(token);  // a copy, as above
                 ++pos_;
                 if (source.isDictionary()) {
                     if (!value.empty() || pos_ >= tokens_.size() || tokens_[pos_].text != ";")

@@ -52,7 +52,9 @@ std::string firstLine(const std::string& text) { return text.substr(0, text.find
 
 vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::filesystem::path& file) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw FatalError("error: particle file '" + file.string() + "' does not exist");
+    if (!std::filesystem::exists(file, ec)) throw FatalError("error: particle file '" + file.string() + "' does not exist");
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw FatalError("error: particle file '" + file.string() + "' is not a regular file (a directory, a device?)");
     checkVtuLayout(file);
     // VTK's XML parser logs its errors itself; the reader's are collected and reported below.
     vtkObject::GlobalWarningDisplayOff();

@@ -3,6 +3,7 @@
 #include "core/FatalError.hpp"
 #include "core/MemoryBudget.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -10,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <zlib.h>
 
 namespace sph {
 
@@ -25,6 +28,7 @@ struct ArrayLayout {
     std::string name, type, section;
     std::uint64_t offset = 0;
     std::optional<std::uint64_t> values;  // elements the header implies; none for strings and cell connectivity
+    std::uint64_t leastValues = 0;         // for connectivity: a point per cell at least
 };
 
 class LayoutError {
@@ -123,6 +127,35 @@ FileHeader readXmlPart(const std::filesystem::path& file, std::uint64_t fileSize
     return {text.substr(0, tagEnd + 1), underscore + 1};
 }
 
+// A string array holds its strings one after another, each ended by a zero byte; VTK's reader
+// overran its buffer when the header promised fewer strings than the data holds (found by
+// fuzzing). Only field data has string arrays here, a few bytes each: they are inflated and
+// their strings counted. `sizes` empty: the data is not compressed.
+void checkStrings(const ArrayLayout& array, const std::string& where, const std::string& stored, const std::vector<std::uint64_t>& sizes,
+                  std::uint64_t blockSize, std::uint64_t uncompressed, const LayoutError& fail) {
+    constexpr std::uint64_t maxStringBytes = 1u << 20;
+    if (uncompressed > maxStringBytes) fail(where + " is a string array of " + std::to_string(uncompressed) + " bytes (at most 1 MiB)");
+    std::string text;
+    if (sizes.empty()) {
+        text = stored;
+    } else {
+        std::size_t at = 0;
+        for (std::size_t b = 0; b < sizes.size(); ++b) {
+            const std::uint64_t expected = b + 1 < sizes.size() ? blockSize : uncompressed - blockSize * (sizes.size() - 1);
+            std::string block(static_cast<std::size_t>(expected), '\0');
+            uLongf length = static_cast<uLongf>(expected);
+            const int status = ::uncompress(reinterpret_cast<Bytef*>(block.data()), &length, reinterpret_cast<const Bytef*>(stored.data() + at),
+                                            static_cast<uLong>(sizes[b]));
+            if (status != Z_OK || length != expected) fail(where + " has a compressed block that does not inflate to its " + std::to_string(expected) + " bytes");
+            text += block;
+            at += static_cast<std::size_t>(sizes[b]);
+        }
+    }
+    const auto strings = static_cast<std::uint64_t>(std::count(text.begin(), text.end(), '\0'));
+    if (strings != *array.values || (!text.empty() && text.back() != '\0'))
+        fail(where + " holds " + std::to_string(strings) + " strings, but NumberOfTuples says " + std::to_string(*array.values));
+}
+
 }  // namespace
 
 void checkVtuLayout(const std::filesystem::path& file) {
@@ -137,7 +170,15 @@ void checkVtuLayout(const std::filesystem::path& file) {
     std::uint64_t points = 0, cells = 0, pieces = 0;
     std::string section;
     std::vector<ArrayLayout> arrays;
+    // VTK's reader dereferences what it makes of an element it does not know (found by fuzzing:
+    // <DataArrayy> in FieldData crashed it): only the elements of an unstructured grid pass.
+    static const std::vector<std::string> elements{"VTKFile",  "UnstructuredGrid", "FieldData", "Piece",          "PointData", "CellData",
+                                                   "Points",   "Cells",            "DataArray", "Array",          "AppendedData",
+                                                   "InformationKey", "Value"};
     for (const XmlTag& tag : tags) {
+        const std::string element = tag.name.starts_with("/") ? tag.name.substr(1) : tag.name;
+        if (std::find(elements.begin(), elements.end(), element) == elements.end())
+            fail("has the XML element <" + tag.name + ">, which a VTK unstructured grid does not have");
         if (tag.name == "VTKFile") {
             vtkFile = &tag;
         } else if (tag.name == "Piece") {
@@ -166,7 +207,8 @@ void checkVtuLayout(const std::filesystem::path& file) {
             if (section == "FieldData") tuples = countOf(tag, "NumberOfTuples", fail);
             if (section == "PointData" || section == "Points") tuples = points;
             if (section == "CellData" || (section == "Cells" && array.name != "connectivity")) tuples = cells;
-            if (tuples && array.type != "String") {
+            if (section == "Cells" && array.name == "connectivity") array.leastValues = cells;
+            if (tuples) {
                 if (*tuples > (std::uint64_t{1} << 40)) fail("array '" + array.name + "' claims " + std::to_string(*tuples) + " tuples");
                 array.values = *tuples * components;
             }
@@ -202,22 +244,29 @@ void checkVtuLayout(const std::filesystem::path& file) {
         }
         return static_cast<bool>(in);
     };
+    // Reads `bytes` bytes at `at` into the appended data (inside the file: checked before).
+    const auto readBytes = [&](std::uint64_t at, std::uint64_t bytes) {
+        std::string data(static_cast<std::size_t>(bytes), '\0');
+        in.seekg(static_cast<std::streamoff>(header.appendedStart + at));
+        in.read(data.data(), static_cast<std::streamsize>(bytes));
+        return data;
+    };
     double uncompressedTotal = 0.0;
     for (const ArrayLayout& array : arrays) {
         const std::string where = "array '" + array.name + "' (offset " + std::to_string(array.offset) + ")";
-        std::vector<std::uint64_t> words;
-        std::uint64_t dataStart = 0, stored = 0, uncompressed = 0;
+        std::vector<std::uint64_t> words, sizes;
+        std::uint64_t dataStart = 0, stored = 0, uncompressed = 0, blockSize = 0;
         if (compressor.empty()) {
             if (!readWords(array.offset, 1, words)) fail(where + " starts past the end of the file");
             dataStart = array.offset + word;
             stored = uncompressed = words[0];
         } else {
             if (!readWords(array.offset, 3, words)) fail(where + " starts past the end of the file");
-            const std::uint64_t blocks = words[0], blockSize = words[1], lastBlock = words[2];
+            const std::uint64_t blocks = words[0], lastBlock = words[2];
+            blockSize = words[1];
             if (blocks > 0 && (blockSize == 0 || lastBlock > blockSize))
                 fail(where + " has a compression header of " + std::to_string(blocks) + " blocks of " + std::to_string(blockSize) +
                      " bytes, the last " + std::to_string(lastBlock) + ": not a valid one");
-            std::vector<std::uint64_t> sizes;
             if (!readWords(array.offset + 3 * word, blocks, sizes))
                 fail(where + " claims " + std::to_string(blocks) + " compressed blocks, more than the file holds");
             dataStart = array.offset + (3 + blocks) * word;
@@ -234,9 +283,15 @@ void checkVtuLayout(const std::filesystem::path& file) {
         if (dataStart > appendedBytes || stored > appendedBytes - dataStart)
             fail(where + " holds " + std::to_string(stored) + " bytes that run past the end of the file");
         const std::uint64_t elementBytes = bytesOfType(array.type);
-        if (array.values && uncompressed != *array.values * elementBytes)
+        if (array.values && array.type != "String" && uncompressed != *array.values * elementBytes)
             fail(where + " holds " + std::to_string(uncompressed) + " bytes, but the header implies " + std::to_string(*array.values) +
                  " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
+        // Found by fuzzing: a connectivity offset one byte out read as zero blocks, which VTK
+        // then read through a null buffer.
+        if (uncompressed % elementBytes != 0 || uncompressed / elementBytes < array.leastValues)
+            fail(where + " holds " + std::to_string(uncompressed) + " bytes, not a whole number of at least " + std::to_string(array.leastValues) +
+                 " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
+        if (array.type == "String" && array.values) checkStrings(array, where, readBytes(dataStart, stored), sizes, blockSize, uncompressed, fail);
         uncompressedTotal += static_cast<double>(uncompressed);
     }
     requireMemory(2.0 * uncompressedTotal, "reading particle file '" + file.string() + "'");

@@ -182,3 +182,11 @@ TEST(Dictionary, NumberOutsideTheDoubleRangeIsAnError) {
     EXPECT_NE(errorOf([] { parse("a 1e-400;"); }), "");
     EXPECT_DOUBLE_EQ(parse("a 1e300; b 0; c 0e-5;").get<double>("a"), 1e300);
 }
+
+TEST(Dictionary, MacroThatReplacesItsOwnSourceWhileMerging) {
+    // Found by the fuzzer (heap-use-after-free): merging `$type` replaced the entry `type` it
+    // was being read from.
+    const Dictionary d = parse("d { type { type 1; other 2; } $type }");
+    EXPECT_DOUBLE_EQ(d.subDict("d").get<double>("type"), 1.0);
+    EXPECT_DOUBLE_EQ(d.subDict("d").get<double>("other"), 2.0);
+}
