@@ -40,25 +40,29 @@ std::vector<std::string> entries(const std::filesystem::path& dir) {
 
 TEST(RunControl, ControlDictEditsTakeEffectWhileRunning) {
     // endTime 5 s would take minutes; once running, a bad edit is reported and ignored, then
-    // endTime 0.03 with writeInterval 0.005 ends the run there with writes every 0.005.
+    // endTime 0.2 with writeInterval 0.005 ends the run there with writes every 0.005. The good
+    // edit waits for the bad one's report (a fixed pause let a fast machine run past the new
+    // endTime before it was read).
     const auto dir = damBreak("5");
     const std::string controlDict = readText(dir / "system/controlDict");
     const pid_t solver = startSolver(dir);
     waitUntilExists(dir / "0.01");
     writeFile(dir / "system/controlDict", std::regex_replace(controlDict, std::regex("endTime +5;"), "endTime -1;"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    std::string edited = std::regex_replace(controlDict, std::regex("endTime +5;"), "endTime 0.03;");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (readText(dir / "log").find("endTime -1 is not later than the current time") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::string edited = std::regex_replace(controlDict, std::regex("endTime +5;"), "endTime 0.2;");
     writeFile(dir / "system/controlDict", std::regex_replace(edited, std::regex("writeInterval +0.01;"), "writeInterval 0.005;"));
     const int status = waitForExit(solver);
     const std::string log = readText(dir / "log");
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << log;
     EXPECT_NE(log.find("warning: ignoring the changed"), std::string::npos) << log;
-    EXPECT_NE(log.find("endTime -1 is not later than the current time"), std::string::npos) << log;
-    EXPECT_NE(log.find("endTime 0.03, writeInterval 0.005"), std::string::npos) << log;
-    EXPECT_NE(log.find("End at t = 0.03:"), std::string::npos) << log;
-    EXPECT_TRUE(std::filesystem::exists(dir / "0.025/fluid.vtu"));
-    EXPECT_TRUE(std::filesystem::exists(dir / "0.03/fluid.vtu"));
-    EXPECT_FALSE(std::filesystem::exists(dir / "0.035"));
+    EXPECT_NE(log.find("endTime 0.2, writeInterval 0.005"), std::string::npos) << log;
+    EXPECT_NE(log.find("End at t = 0.2:"), std::string::npos) << log;
+    EXPECT_TRUE(std::filesystem::exists(dir / "0.195/fluid.vtu"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "0.2/fluid.vtu"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "0.205"));
 }
 
 TEST(RunControl, RunTimeModifiableOffIgnoresEdits) {
