@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -27,7 +26,7 @@ struct XmlTag {
 struct ArrayLayout {
     std::string name, type, section;
     std::uint64_t offset = 0;
-    std::optional<std::uint64_t> values;  // elements the header implies; none for strings and cell connectivity
+    std::optional<std::uint64_t> values;  // elements (strings, for a String array) the header implies; none for connectivity
     std::uint64_t leastValues = 0;         // for connectivity: a point per cell at least
 };
 
