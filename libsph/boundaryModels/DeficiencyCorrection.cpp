@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -168,6 +170,8 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
     const double lambda = repeatWrittenCoefficients_ ? 0.0 : firstEvaluation_ ? 1.0 : smoothing_;
     firstEvaluation_ = repeatWrittenCoefficients_ = false;
     weightSum_.assign(n, 0.0);
+    pairRanges_.resize(n);
+    pairsPerThread_.resize(static_cast<std::size_t>(omp_get_max_threads()));
     blend_.assign(n, Vec<D>::Zero());
     if (separateAreaIntegral) areaIntegral_.assign(n, Vec<D>::Zero());
     push_.assign(end, 0.0);  // indexed by wall particle; [0, begin) unused
@@ -179,23 +183,32 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
 
     std::visit(
         [&](const auto& kernel, const auto& eos) {
-            // Pass 1: each fluid particle's weights, blend c_i and area integral g_i.
-#pragma omp parallel for schedule(static)
-            for (std::size_t i = 0; i < n; ++i) {
-                double sum = 0.0;
-                Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
-                patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
-                    const double distance = std::sqrt(r2);
-                    if (distance == 0.0) return;
-                    const double W = kernel.value(distance);
-                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
-                    sum += w;
-                    blend += (W * w) * directionOf(j, r, distance);
-                    if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
-                });
-                weightSum_[i] = sum;
-                blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
-                if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
+            // Pass 1: each fluid particle's weights, blend c_i and area integral g_i; the pairs
+            // are kept (in this thread's list) for pass 3, so the search and weights run once.
+#pragma omp parallel
+            {
+                auto& pairs = pairsPerThread_[static_cast<std::size_t>(omp_get_thread_num())];
+                pairs.clear();
+#pragma omp for schedule(static)
+                for (std::size_t i = 0; i < n; ++i) {
+                    double sum = 0.0;
+                    Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
+                    const auto first = static_cast<std::uint32_t>(pairs.size());
+                    patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                        const double distance = std::sqrt(r2);
+                        if (distance == 0.0) return;
+                        const double W = kernel.value(distance);
+                        const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
+                        sum += w;
+                        blend += (W * w) * directionOf(j, r, distance);
+                        if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
+                        pairs.push_back({j, W, W * w, distance, r});
+                    });
+                    pairRanges_[i] = {static_cast<std::uint32_t>(omp_get_thread_num()), first, static_cast<std::uint32_t>(pairs.size())};
+                    weightSum_[i] = sum;
+                    blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
+                    if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
+                }
             }
             const Vec<D>* areaIntegral = separateAreaIntegral ? areaIntegral_.data() : blend_.data();
             // Pass 2: each wall particle's pressure, density, scale R_j and push.
@@ -250,12 +263,11 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                 const double ownPressureTerm = p[i] / (rho[i] * rho[i]);
                 Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
                 double rate = 0.0, areaWeight = 0.0;
-                patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
-                    const double distance = std::sqrt(r2);
-                    if (distance == 0.0) return;
-                    const double W = kernel.value(distance);
-                    const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
-                    const double shape = W * w * inverseSum;
+                const PairRange range = pairRanges_[i];
+                const WallPair* pairs = pairsPerThread_[range.thread].data();
+                for (std::uint32_t k = range.begin; k < range.end; ++k) {
+                    const auto& [j, W, blendWeight, distance, r] = pairs[k];
+                    const double shape = blendWeight * inverseSum;
                     const Vec<D> d = directionOf(j, r, distance);
                     if constexpr (WallPressure) {
                         sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
@@ -268,7 +280,7 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
                         areaWeight += W * area[j];
                         penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -(v[i] - vWall[j]).dot(normal[j]))) * normal[j];
                     }
-                });
+                }
                 if constexpr (DistancePartner)
                     a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
                 else

@@ -59,6 +59,7 @@
 #include "boundaryModels/WallDistancePenalty.hpp"
 #include "kernels/KernelOutsideFraction.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -93,7 +94,21 @@ private:
     double smoothing_;
     bool firstEvaluation_ = true;
     bool repeatWrittenCoefficients_ = false;  // restart: the written C_j already hold this evaluation's
-    // This evaluation only; sized once per evaluation, never per particle.
+    // A fluid-wall pair within the support, found once per evaluation (pass 1) and read again
+    // by the correction (pass 3).
+    struct WallPair {
+        std::uint32_t wall;
+        double kernel;       // W_ij
+        double blendWeight;  // W_ij w_ij
+        double distance;
+        Vec<D> r;            // x_i - x_j, nearest image
+    };
+    struct PairRange {
+        std::uint32_t thread, begin, end;  // fluid particle i's pairs in that thread's list
+    };
+    // This evaluation only; kept between evaluations so that no step allocates once sizes settle.
+    std::vector<std::vector<WallPair>> pairsPerThread_;
+    std::vector<PairRange> pairRanges_;  // per fluid particle
     std::vector<double> weightSum_;      // per fluid particle: sum_j w_ij
     std::vector<Vec<D>> blend_;          // c_i
     std::vector<Vec<D>> areaIntegral_;   // g_i, where it differs from c_i
