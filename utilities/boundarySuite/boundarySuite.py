@@ -16,8 +16,8 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
 - flows that hurt, every wall model on the same case: the standard 2D dam break
   (damBreakWallPressure2D at H/dx = 20, 40, 80: blow-up, wall-pressure error against De Courcy
   et al. 2024, penetrations at every step), sloshing (sloshingTank2D against Faltinsen et al.
-  2000), a steep fast floor bulge (deformingTank2D, 50 % of the depth at 5x and 7.5x the
-  shipped wall speed), a 3D still-water box (H/dx = 8 and 10);
+  2000), a steep fast floor bulge (steepBulge2D, 50 % of the depth at 5x and 7.5x
+  deformingTank2D's wall speed), 3D still water (hydrostaticTank3D at H/dx = 8 and 10);
 each with the wall time that produced it (runs two at a time, one thread each). Penetrations
 are counted at every step (the wallPenetrations function object).
 
@@ -317,73 +317,28 @@ def sloshing_row(model, patch, layout):
 
 
 def bulge_row(model, patch, layout, period):
-    """deformingTank2D's floor bulging by 0.3 (half the depth) over `period` (2 s shipped, 0.1 high)."""
-    motion = "motion { type gaussianBulge; centre (1 0); amplitude 0.3; width 0.2; period %g; }" % period
-    edits = [("T%g" % period, "constant/boundaryProperties", (r"motion\s*\{[^}]*\}", motion)),
-             ("", "system/controlDict", (r"endTime\s+[0-9.e-]+;", "endTime %g;" % period)),
-             ("", "system/generateParticlesDict", (r"domain\s*\{[^}]*\}", "domain { min (-0.25 -0.5); max (2.25 1.25); }"))]
-    directory = flow_case("deformingTank2D", model, patch, "surface", edits=edits)
+    """steepBulge2D: the floor bulging by 0.3 (half the depth) over `period` (1.2 s shipped)."""
+    edits = [("T%g" % period, "constant/boundaryProperties", (r"period [0-9.e-]+;", "period %g;" % period)),
+             ("", "system/controlDict", (r"endTime\s+[0-9.e-]+;", "endTime %g;" % period))]
+    directory = flow_case("steepBulge2D", model, patch, "surface", edits=edits)
     if layout == "layers":
         edit(os.path.join(directory, "system", "generateParticlesDict"), r"tank\s*\{[^}]*\}",
              "tank { type boxWalls; min (0 0); max (2 1); layers 3; open (yMax); }")
-    add_leak_counter(directory)
     generate(directory)
     seconds, failure = run(directory)
-    noise = None
-    if not failure:
-        values = []
-        for state in glob.glob(os.path.join(directory, "[0-9]*", "fluid.csv")):
-            t = float(os.path.basename(os.path.dirname(state)))
-            if t == 0:
-                continue
-            with open(state) as f:
-                fluid = [(float(r["x"]), float(r["y"]), float(r["pressure"])) for r in csv.DictReader(f)]
-            floor = lambda x: 0.3 * math.sin(2 * math.pi * t / period) * math.exp(-((x - 1.0) ** 2) / 0.04)  # noqa: E731
-            near = [p for p in fluid if abs(p[0] - 1.0) < 0.3 and p[1] < floor(p[0]) + 0.052]
-            deviations = []
-            for a in near:  # p about its neighbours' mean within 2.5 dx: noise, not the dynamic pressure
-                around = [b[2] for b in fluid if (a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 < (2.5 * 0.02) ** 2]
-                deviations.append(a[2] - sum(around) / len(around))
-            if deviations:
-                values.append(math.sqrt(sum(d * d for d in deviations) / len(deviations)))
-        noise = sum(values) / len(values)
-    return (model, period, noise, most_behind_wall(directory), seconds, failure)
+    noise, leaks = compare(("steepBulge2D", "compareBulge.py"), directory) if not failure else (None, most_behind_wall(directory))
+    return (model, period, noise, int(leaks), seconds, failure)
 
 
 def box_row(model, patch, layout, resolution):
-    """A 3D box 1 x 0.6 m, water H = 0.4 m deep, to t = 2 s (gravity ramped over 0.5 s)."""
-    directory = os.path.join(WORK, "box3D-%s-%d" % (model, resolution))
-    shutil.rmtree(directory, ignore_errors=True)
-    dx = 0.4 / resolution
-    layers = "layers 1; firstLayerOffset 0;" if layout == "surface" else "layers 3;"
-    files = {
-        "system/generateParticlesDict": "dimension 3;\nspacing %g;\ndomain { min (-0.2 -0.2 -0.2); max (1.2 0.8 0.8); }\ninitialPressure hydrostatic;\n"
-        "fluid { water { type box; min (0 0 0); max (1 0.6 0.4); } }\n"
-        "boundaries { tank { type boxWalls; min (0 0 0); max (1 0.6 0.6); %s open (zMax); } }\n" % (dx, layers),
-        "system/sphSchemes": "kernel { type wendlandC2; hdx 1.3; }\ndensity { type continuity; }\nviscosity { type artificial; alpha 0.02; }\n"
-        "densityDiffusion { type fourtakas; delta 0.1; }\n",
-        "system/timeIntegration": "integrator { type symplectic; }\ncourant 0.2;\n",
-        "system/controlDict": "application wcsph;\nstartFrom latestTime;\nendTime 2;\nwriteInterval 0.5;\nwriteCsv yes;\n"
-        "functions\n{\n    leaks { type wallPenetrations; }\n}\n",
-        "constant/fluidProperties": "rho0 1000;\ngravity (0 0 -9.81);\ngravityRampTime 0.5;\n"
-        "equationOfState { type tait; gamma 7; c0FromHeight { coefficient 10; height 0.4; } }\n",
-        "constant/boundaryProperties": "tank { %s }\n" % patch,
-    }
-    for path, text in files.items():
-        os.makedirs(os.path.dirname(os.path.join(directory, path)), exist_ok=True)
-        with open(os.path.join(directory, path), "w") as f:
-            f.write(text)
+    """hydrostaticTank3D (box 1 x 0.6 m, H = 0.4 m, to t = 4 s) at dx = H/resolution."""
+    directory = flow_case("hydrostaticTank3D", model, patch, layout, 0.4 / resolution, layers=3)
     generate(directory)
     seconds, failure = run(directory)
     if failure:
-        return (model, resolution, None, None, None, most_behind_wall(directory), seconds, failure)
-    with open(os.path.join(directory, "2", "fluid.csv")) as f:
-        fluid = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
-    kinetic = sum(0.5 * (p["velocity_x"] ** 2 + p["velocity_y"] ** 2 + p["velocity_z"] ** 2) for p in fluid) / len(fluid) / (9.81 * 0.4)
-    near = [p for p in fluid if p["z"] < 2.6 * dx]
-    pressure = math.sqrt(sum(((p["pressure"] - 1000 * 9.81 * (0.4 - p["z"])) / (1000 * 9.81 * 0.4)) ** 2 for p in near) / len(near))
-    lowest = min(p["z"] for p in fluid) / dx
-    return (model, resolution, kinetic, pressure, lowest, most_behind_wall(directory), seconds, "")
+        return (model, resolution, None, None, None, None, None, most_behind_wall(directory), seconds, failure)
+    _, kinetic, pressure, gap, spread, centre, leaks = compare(("hydrostaticTank3D", "checkStillWater.py"), directory)
+    return (model, resolution, kinetic, pressure, gap, spread, centre, int(leaks), seconds, "")
 
 
 def flow_rows():
@@ -400,7 +355,7 @@ def flow_lines(dam, slosh, bulge, box):
     lines = ["", "## Flows that hurt: every wall model on the same case", "",
              "Every run alone on one thread, two at a time; penetrations: the most fluid particles behind the wall's first layer of "
              "particles at any step (wallPenetrations). The correction runs with its defaults (calibration wallPressure, the "
-             "wallDistance damper); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D box).", "",
+             "wallDistance damper); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D tank).", "",
              "### Standard 2D dam break (damBreakWallPressure2D, to T = t sqrt(g/H) = 8)", "",
              "Downstream-wall pressure at P1-P4 against De Courcy et al. (2024): RMS of the Delta T = 0.1 window means, T = 2-7, "
              "over rho g H (the fluid interpolated dx/2 from the wall for every model).", "",
@@ -415,19 +370,20 @@ def flow_lines(dam, slosh, bulge, box):
         for model, errors, leaks, seconds, failure in slosh:
             values = "%.4f | %.4f" % (errors[0], errors[1]) if errors else " | "
             lines.append("| %s | %s | %d | %.1f | %s |" % (model, values, leaks, seconds, outcome(failure)))
-    lines += ["", "### Steep fast floor bulge (deformingTank2D with amplitude 0.3 = half the depth, one period)", "",
-              "Period 1.2 s: 5x the shipped peak wall speed (0.1 pi m/s), 0.8 s: 7.5x. Pressure noise: RMS of p about its "
+    lines += ["", "### Steep fast floor bulge (steepBulge2D: amplitude 0.3 = half the depth, one period)", "",
+              "Period 1.2 s (shipped): 5x deformingTank2D's peak wall speed (0.1 pi m/s), 0.8 s: 7.5x. Pressure noise: RMS of p about its "
               "neighbours' mean within 2.5 dx, over the fluid within 2h of the floor near the bulge, averaged over the written times.", "",
               "| model | period [s] | pressure noise [Pa] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|"]
     for model, period, noise, leaks, seconds, failure in bulge:
         lines.append("| %s | %g | %s | %d | %.1f | %s |" % (model, period, "%.1f" % noise if noise is not None else "", leaks, seconds, outcome(failure)))
-    lines += ["", "### 3D still-water box (1 x 0.6 m, H = 0.4 m, t = 2 s)", "",
-              "Kinetic energy per unit mass over g H; near-floor pressure: RMS of p - rho g (H - z) over rho g H within 2.6 dx of the "
-              "floor; lowest: the lowest fluid particle's height over dx (0.5 at the start).", "",
-              "| model | H/dx | KE / gH | near-floor p RMS | lowest / dx | penetrations | wall time [s] | outcome |",
-              "|---|---|---|---|---|---|---|---|"]
-    for model, resolution, kinetic, pressure, lowest, leaks, seconds, failure in box:
-        values = "%.2e | %.4f | %.3f" % (kinetic, pressure, lowest) if kinetic is not None else " | | "
+    lines += ["", "### 3D still water (hydrostaticTank3D: box 1 x 0.6 m, H = 0.4 m, t = 4 s)", "",
+              "At t = 4 (checkStillWater.py): kinetic energy per unit mass over g H; near-floor pressure: RMS of p - rho g (H - z) "
+              "over rho g H within 2h of the floor; floor gap: mean height of the lowest particle of each dx x dx column over dx "
+              "(0.5 at the start), and its spread; centre line: L2 pressure error over rho g H.", "",
+              "| model | H/dx | KE / gH | near-floor p RMS | floor gap / dx | gap spread / dx | centre-line p error | penetrations | wall time [s] | outcome |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for model, resolution, kinetic, pressure, gap, spread, centre, leaks, seconds, failure in box:
+        values = "%.2e | %.4f | %.3f | %.3f | %.4f" % (kinetic, pressure, gap, spread, centre) if kinetic is not None else " | | | | "
         lines.append("| %s | %d | %s | %d | %.1f | %s |" % (model, resolution, values, leaks, seconds, outcome(failure)))
     return lines
 
