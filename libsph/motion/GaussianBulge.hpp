@@ -3,7 +3,8 @@
 // so the bulge grows convex (into the fluid) over the first quarter period, returns, and turns
 // concave over the second half (the situation of the paper's Fig. 4). Every layer of wall
 // particles moves by the field at its own initial position, so virtual particles behind the
-// wall bunch or spread as the paper describes.
+// wall bunch or spread as the paper describes. Normals and areas follow Nanson's formula in 3D
+// (areaStretch); 2D takes them from the moved surface.
 // Example (a patch's motion):   motion { type gaussianBulge; centre (1 0); amplitude 0.1; width 0.2; period 2; }
 #pragma once
 
@@ -30,6 +31,15 @@ public:
     Kinematics<D> at(const Vec<D>& x0, const Vec<D>& n0, double t) const override {
         const Vec<D> shape = n0 * (amplitude_ * std::exp(-(x0 - centre_).squaredNorm() / (width_ * width_)));
         return {x0 + shape * std::sin(omega_ * t), shape * (omega_ * std::cos(omega_ * t)), shape * (-omega_ * omega_ * std::sin(omega_ * t))};
+    }
+
+    // u = A(t) e(x0) n0 with n0 constant along a flat wall: F = I + A(t) n0 (grad e)^T, so
+    // J F^-T n0 = (1 + A(t) grad e . n0) n0 - A(t) grad e (on a curved wall the term A e grad n0
+    // is left out).
+    Vec<D> areaStretch(const Vec<D>& x0, const Vec<D>& n0, double t) const override {
+        const double lift = amplitude_ * std::sin(omega_ * t);
+        const Vec<D> gradient = (x0 - centre_) * (-2.0 / (width_ * width_) * std::exp(-(x0 - centre_).squaredNorm() / (width_ * width_)));
+        return (1.0 + lift * gradient.dot(n0)) * n0 - lift * gradient;
     }
 
 private:

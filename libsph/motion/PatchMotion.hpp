@@ -3,8 +3,9 @@
 //   piston { type dummyParticles; motion { type oscillation; amplitude (0.05 0); frequency 1; } }
 // Every particle follows the motion of the material point where it started: position,
 // velocity and acceleration at time t. Rigid motions turn the normals with the patch; a
-// deformation moves particles by a displacement field, and the wall-force models' normals and
-// spacings are then recomputed from the moved surface (FluidSystem's boundary stage).
+// deformation moves particles by a displacement field, and the wall-force models' normals,
+// spacings and areas are then recomputed (FluidSystem's boundary stage: in 2D from the moved
+// surface's chords, in 3D from the motion's areaStretch).
 #pragma once
 
 #include "core/Registry.hpp"
@@ -32,6 +33,11 @@ public:
     virtual Kinematics<D> at(const Vec<D>& initialPosition, const Vec<D>& initialNormal, double t) const = 0;
     // The normal at t of a particle whose normal was n0 (rigid motions).
     virtual Vec<D> normalAt(const Vec<D>& initialNormal, double /*t*/) const { return initialNormal; }
+    // A deformation's area vector at t per unit initial area, J F^-T n0 (Nanson's formula, F the
+    // gradient of the motion at x0): along the new normal, its length the stretch da/dA. 3D
+    // deforming patches take their normals and areas from it (their particles have no order
+    // along the surface to take chords along, as 2D does).
+    virtual Vec<D> areaStretch(const Vec<D>& /*initialPosition*/, const Vec<D>& initialNormal, double t) const { return normalAt(initialNormal, t); }
     // FatalError when the motion is not defined over [startTime, endTime] (a table too short).
     virtual void checkCovers(double /*startTime*/, double /*endTime*/) const {}
 

@@ -75,6 +75,11 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         // Motions are given from the initial configuration: written with the state, so a restart keeps it.
         if (!walls.hasVector("initialPosition")) walls.addVector("initialPosition", Vec<D>::Zero()) = walls.position;
         if (!walls.hasVector("initialNormal")) walls.addVector("initialNormal", Vec<D>::Zero()) = walls.vector("normal");
+        const bool deforms = std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.motion && p.motion->deforms(); });
+        if (D == 3 && deforms && walls.hasScalar("area")) {  // areaStretch scales the generated areas and spacings
+            if (!walls.hasScalar("initialArea")) walls.addScalar("initialArea", 0.0) = walls.scalar("area");
+            if (!walls.hasScalar("initialSpacing")) walls.addScalar("initialSpacing", 0.0) = walls.scalar("spacing");
+        }
         walls.addVector("acceleration", Vec<D>::Zero(), false);
     }
     wallCells_.markCellsNearPoints();  // the fluid-wall pass skips the fluid cells with no wall particle near
@@ -114,14 +119,14 @@ void FluidSystem<D>::moveWalls(double t) {
             acceleration[w] = k.acceleration;
             normal[w] = patch.motion->normalAt(n0[w], t);
         }
-        if (patch.motion->deforms()) recomputeSurface(patch);
+        if (patch.motion->deforms()) recomputeSurface(patch, t);
         if (patch.cells) patch.cells->build(walls.position, patch.begin, patch.end);
     }
     wallCells_.build(walls.position, 0, wallParticleEnd_);
 }
 
 template <int D>
-void FluidSystem<D>::recomputeSurface(const Patch<D>& patch) {
+void FluidSystem<D>::recomputeSurface(const Patch<D>& patch, double t) {
     // 2D: the surface particles (layer 0) lie in order along the patch; the normal is the
     // neighbours' chord turned by 90 degrees to the side of the initial normal, the spacing
     // the mean distance to the neighbours. A closed curve wraps around.
@@ -152,6 +157,24 @@ void FluidSystem<D>::recomputeSurface(const Patch<D>& patch) {
             spacing[surface[k]] = end ? std::max(back, ahead) : 0.5 * (back + ahead);
             // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
             area[surface[k]] = end ? spacing[surface[k]] : 0.5 * chord.norm();
+        }
+    } else if constexpr (D == 3) {
+        // Nanson's formula from the motion itself, for every layer: area A0 |J F^-T n0|, the
+        // spacing stretched by the square root of the same ratio.
+        if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
+        const auto& x0 = walls.vector("initialPosition");
+        const auto& n0 = walls.vector("initialNormal");
+        const auto& area0 = walls.scalar("initialArea");
+        const auto& spacing0 = walls.scalar("initialSpacing");
+        auto& normal = walls.vector("normal");
+        auto& spacing = walls.scalar("spacing");
+        auto& area = walls.scalar("area");
+        for (std::size_t w = patch.begin; w < patch.end; ++w) {
+            const Vec<3> stretched = patch.motion->areaStretch(x0[w], n0[w], t);
+            const double ratio = stretched.norm();
+            normal[w] = stretched / ratio;
+            area[w] = area0[w] * ratio;
+            spacing[w] = spacing0[w] * std::sqrt(ratio);
         }
     }
 }

@@ -54,6 +54,32 @@ class CleanCase(unittest.TestCase):
             self.assertIn("keeping 0.01/", cleaned.stdout)
             self.assertEqual(before - left, set())
 
+    def test_allclean_removes_csv_states_profiles_and_variants(self):
+        # hydrostaticTank3D writes fluid.csv beside fluid.vtu (writeCsv), lineSample profiles in
+        # postProcessing/<name>/<t0>/<time>/ and variants/: Allclean leaves the case as shipped.
+        with tempfile.TemporaryDirectory() as work:
+            case = os.path.join(work, "tank")
+            shipped = os.path.join(ROOT, "cases", "hydrostaticTank3D")  # as in git, whatever an earlier Allrun left
+            for part in ("system", "constant"):
+                shutil.copytree(os.path.join(shipped, part), os.path.join(case, part))
+            for name in ("Allrun", "Allclean", "checkStillWater.py", "README.md"):
+                shutil.copy2(os.path.join(shipped, name), case)
+            edits = [("system/generateParticlesDict", "spacing     0.04;", "spacing     0.05;"),
+                     ("system/controlDict", "endTime         4;", "endTime         0.1;")]
+            for path, old, new in edits:
+                with open(os.path.join(case, path)) as f:
+                    text = f.read()
+                with open(os.path.join(case, path), "w") as f:
+                    f.write(text.replace(old, new))
+            before = tree(case)
+            env = dict(os.environ, SPHKIT_BIN=BIN, OMP_NUM_THREADS="1")
+            subprocess.run([os.path.join(case, "Allrun")], check=True, capture_output=True, env=env)
+            self.assertIn("0.1/fluid.csv", tree(case))
+            self.assertIn("postProcessing/pressure/0/0/line.csv", tree(case))
+            self.assertIn("variants/dummyParticles/0.1/fluid.vtu", tree(case))
+            cleaned = subprocess.run([os.path.join(case, "Allclean")], check=True, capture_output=True, text=True, env=env)
+            self.assertEqual(tree(case), before, cleaned.stdout)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -14,8 +14,8 @@ BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 
 
 def run_case(work, name, edits, script):
-    """Copies cases/<name> into work, applies (file, old, new) edits, runs it and its script;
-    returns the numbers of the script's last line."""
+    """Copies cases/<name> into work, applies (file, old, new) edits, runs it and its script (a
+    case's own, or a utility beside the binaries); returns the numbers of the script's last line."""
     case = os.path.join(work, name)
     for part in ("system", "constant"):
         shutil.copytree(os.path.join(ROOT, "cases", name, part), os.path.join(case, part))
@@ -28,19 +28,33 @@ def run_case(work, name, edits, script):
             f.write(text.replace(old, new))
     subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], check=True, capture_output=True)
     subprocess.run([os.path.join(BIN, "wcsph"), "-case", case], check=True, capture_output=True)
-    result = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "cases", name, script), case], check=True, capture_output=True, text=True)
+    command = [os.path.join(BIN, script)] if os.path.exists(os.path.join(BIN, script)) else ["/usr/bin/python3", os.path.join(ROOT, "cases", name, script)]
+    result = subprocess.run(command + [case], check=True, capture_output=True, text=True)
     return [float(v) for v in result.stdout.strip().splitlines()[-1].split()[1:]]
 
 
 class CorrectionCases(unittest.TestCase):
     def test_steep_bulge_as_shipped(self):
         with tempfile.TemporaryDirectory() as work:
-            noise, leaks = run_case(work, "steepBulge2D", [], "compareBulge.py")
+            noise, last, leaks = run_case(work, "steepBulge2D", [], "bulgeNoise")
         self.assertAlmostEqual(noise, 370.0, delta=10.0, msg="pressure noise [Pa], README and doc/boundarySuite.md")
+        self.assertEqual(last, 1.2)
+        self.assertEqual(leaks, 0, "fluid behind the wall at some step")
+
+    def test_steep_bulge_in_3d_rises_and_returns_at_h_over_dx_8(self):
+        # The shipped case at dx = H/8 over the convex half period (the floor up by half the depth
+        # and back at 1.05 m/s, where dummy particles blow up at H/dx = 10).
+        edits = [("system/generateParticlesDict", "spacing     0.04;", "spacing     0.05;"),
+                 ("system/controlDict", "endTime         1.2;", "endTime         0.6;")]
+        with tempfile.TemporaryDirectory() as work:
+            noise, last, leaks = run_case(work, "steepBulge3D", edits, "bulgeNoise")
+        self.assertAlmostEqual(noise, 192.4, delta=6.0, msg="pressure noise [Pa]")
+        self.assertEqual(last, 0.6)
         self.assertEqual(leaks, 0, "fluid behind the wall at some step")
 
     def test_still_water_in_3d_at_h_over_dx_4(self):
-        # The shipped case at dx = H/4 to t = 2 s; the README's figures are at H/10 and t = 4 s.
+        # The shipped case at dx = H/4 to t = 2 s (edges and corners on one layer of wall
+        # particles); the README's figures are at H/10 and t = 4 s.
         edits = [("system/generateParticlesDict", "spacing     0.04;", "spacing     0.1;"),
                  ("system/controlDict", "endTime         4;", "endTime         2;")]
         with tempfile.TemporaryDirectory() as work:

@@ -8,6 +8,7 @@
 #include "physics/FluidSystem.hpp"
 #include "support/CaseFixture.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -82,6 +83,68 @@ TEST(PatchMotion, GaussianBulgeMovesAlongTheNormalAndDeforms) {
     EXPECT_NEAR(concave.position.y(), -0.1, 1e-14);
     EXPECT_NEAR(bulge.at(Vec<2>(2, 0), Vec<2>(0, 1), 0.5).position.y(), 0.1 * std::exp(-25.0), 1e-15);
     expectConsistentKinematics<2>(bulge, Vec<2>(1.1, 0), Vec<2>(0, 1), 0.8);
+}
+
+TEST(PatchMotion, GaussianBulgeAreaStretchIsTheCrossProductOfTheMovedTangents) {
+    // On the floor z = 0 (n0 = z), the moved surface's tangents by central differences:
+    // dx/dx0 x dx/dy0 is the area vector per unit initial area (Nanson's formula).
+    const GaussianBulge<3> bulge(dictionary("centre (0.5 0.3 0); amplitude 0.12; width 0.15; period 1.2;"));
+    const Vec<3> n0(0, 0, 1);
+    for (const Vec<3>& x0 : {Vec<3>(0.5, 0.3, 0), Vec<3>(0.6, 0.25, 0), Vec<3>(0.42, 0.41, 0)}) {
+        for (double t : {0.3, 0.77, 0.9}) {
+            const double e = 1e-6;
+            const auto moved = [&](const Vec<3>& d) { return bulge.at(Vec<3>(x0 + d), n0, t).position; };
+            const Vec<3> along = (moved(Vec<3>(e, 0, 0)) - moved(Vec<3>(-e, 0, 0))) / (2 * e);
+            const Vec<3> across = (moved(Vec<3>(0, e, 0)) - moved(Vec<3>(0, -e, 0))) / (2 * e);
+            EXPECT_LT((bulge.areaStretch(x0, n0, t) - along.cross(across)).norm(), 1e-8) << x0.transpose() << " t " << t;
+        }
+    }
+    // At the top of the bulge the wall only moves: the same normal, the same area.
+    EXPECT_LT((bulge.areaStretch(Vec<3>(0.5, 0.3, 0), n0, 0.3) - n0).norm(), 1e-15);
+}
+
+TEST(PatchMotion, DeformingPatchIn3DTakesNormalsAndAreasFromTheMotion) {
+    // A 21 x 21 floor bulging into the fluid: the flanks' normals lean away from the centre, the
+    // area grows, and an edge particle (no area) keeps none.
+    ParticleSet<3> fluid("fluid");
+    fluid.resize(1);
+    fluid.position[0] = Vec<3>(0.5, 0.5, 0.5);
+    fluid.addScalar("density", 1000.0);
+    fluid.addScalar("mass", 1.0);
+    fluid.addVector("velocity", Vec<3>::Zero());
+    ParticleSet<3> walls("walls");
+    walls.resize(441);
+    for (std::size_t k = 0; k < 441; ++k) walls.position[k] = Vec<3>(0.05 * double(k % 21), 0.05 * double(k / 21), 0.0);
+    walls.addScalar("mass", 1.0);
+    walls.addScalar("spacing", 0.05);
+    auto& area = walls.addScalar("area", 0.0025);
+    area[0] = 0.0;  // as boxWalls' edge particles
+    walls.addVector("normal", Vec<3>(0, 0, 1));
+    walls.addInteger("patch", 0);
+    walls.addInteger("layer", 0);
+    std::vector<Patch<3>> patches(1);
+    patches[0].name = "floor";
+    patches[0].end = 441;
+    patches[0].model = std::make_unique<RepulsiveWall<3>>(MonaghanKajtar2009{1e-9, 0.05, 0.0, 0.0});
+    patches[0].motion = std::make_unique<GaussianBulge<3>>(dictionary("centre (0.5 0.5 0); amplitude 0.2; width 0.3; period 4;"));
+    FluidModels<3> models{WendlandC2<3>(0.065), TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    FluidSystem<3> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<3>(-1, -1, -1), Vec<3>(2, 2, 2),
+                          Vec<3>::Zero(), 0.0);
+    system.evaluateRates(1.0);  // full convex bulge
+    const auto& n = system.walls.vector("normal");
+    const auto& a = system.walls.scalar("area");
+    const std::size_t top = 10 * 21 + 10, leftFlank = 10 * 21 + 6, frontFlank = 6 * 21 + 10;
+    EXPECT_NEAR(system.walls.position[top].z(), 0.2, 1e-14);
+    EXPECT_LT((n[top] - Vec<3>(0, 0, 1)).norm(), 1e-12);
+    EXPECT_NEAR(a[top], 0.0025, 1e-15);
+    EXPECT_LT(n[leftFlank].x(), -0.3);
+    EXPECT_NEAR(n[leftFlank].y(), 0.0, 1e-12);
+    EXPECT_LT(n[frontFlank].y(), -0.3);
+    EXPECT_NEAR(n[leftFlank].norm(), 1.0, 1e-14);
+    EXPECT_NEAR(a[leftFlank], 0.0025 / n[leftFlank].z(), 1e-12);  // a graph z(x, y): dA = dx dy / n_z
+    EXPECT_GT(system.walls.scalar("spacing")[leftFlank], 0.05);
+    EXPECT_EQ(a[0], 0.0);
 }
 
 TEST(PatchMotion, TableInterpolatesAndMustCoverTheRun) {
