@@ -3,8 +3,8 @@
 // so the bulge grows convex (into the fluid) over the first quarter period, returns, and turns
 // concave over the second half (the situation of the paper's Fig. 4). Every layer of wall
 // particles moves by the field at its own initial position, so virtual particles behind the
-// wall bunch or spread as the paper describes. Normals and areas follow Nanson's formula in 3D
-// (areaStretch); 2D takes them from the moved surface.
+// wall bunch or spread as the paper describes. Normals and areas follow Nanson's formula
+// (areaStretch) where the wall is not a 2D curve, whose moved surface gives them.
 // Example (a patch's motion):   motion { type gaussianBulge; centre (1 0); amplitude 0.1; width 0.2; period 2; }
 #pragma once
 

@@ -4,8 +4,8 @@
 // Every particle follows the motion of the material point where it started: position,
 // velocity and acceleration at time t. Rigid motions turn the normals with the patch; a
 // deformation moves particles by a displacement field, and the wall-force models' normals,
-// spacings and areas are then recomputed (FluidSystem's boundary stage: in 2D from the moved
-// surface's chords, in 3D from the motion's areaStretch).
+// spacings and areas are then recomputed (FluidSystem's boundary stage: from the moved
+// surface's chords on a 2D curve, else from the motion's areaStretch).
 #pragma once
 
 #include "core/Registry.hpp"
@@ -34,9 +34,9 @@ public:
     // The normal at t of a particle whose normal was n0 (rigid motions).
     virtual Vec<D> normalAt(const Vec<D>& initialNormal, double /*t*/) const { return initialNormal; }
     // A deformation's area vector at t per unit initial area, J F^-T n0 (Nanson's formula, F the
-    // gradient of the motion at x0): along the new normal, its length the stretch da/dA. 3D
-    // deforming patches take their normals and areas from it (their particles have no order
-    // along the surface to take chords along, as 2D does).
+    // gradient of the motion at x0): along the new normal, its length the stretch da/dA. Deforming
+    // patches whose particles have no order along the surface to take chords along (3D, 2D
+    // boxWalls) take their normals and areas from it.
     virtual Vec<D> areaStretch(const Vec<D>& /*initialPosition*/, const Vec<D>& initialNormal, double t) const { return normalAt(initialNormal, t); }
     // FatalError when the motion is not defined over [startTime, endTime] (a table too short).
     virtual void checkCovers(double /*startTime*/, double /*endTime*/) const {}

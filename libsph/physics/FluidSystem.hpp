@@ -120,6 +120,8 @@ private:
     void addWallForces(double t);
     void moveWalls(double t);
     void recomputeSurface(const Patch<D>& patch, double t);
+    bool surfaceFromChords(const Patch<D>& patch);
+    void surfaceFromMotion(const Patch<D>& patch, double t);
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;

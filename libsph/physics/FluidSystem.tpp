@@ -76,7 +76,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         if (!walls.hasVector("initialPosition")) walls.addVector("initialPosition", Vec<D>::Zero()) = walls.position;
         if (!walls.hasVector("initialNormal")) walls.addVector("initialNormal", Vec<D>::Zero()) = walls.vector("normal");
         const bool deforms = std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.motion && p.motion->deforms(); });
-        if (D == 3 && deforms && walls.hasScalar("area")) {  // areaStretch scales the generated areas and spacings
+        if (D >= 2 && deforms && walls.hasScalar("area")) {  // areaStretch scales the generated areas and spacings
             if (!walls.hasScalar("initialArea")) walls.addScalar("initialArea", 0.0) = walls.scalar("area");
             if (!walls.hasScalar("initialSpacing")) walls.addScalar("initialSpacing", 0.0) = walls.scalar("spacing");
         }
@@ -127,20 +127,34 @@ void FluidSystem<D>::moveWalls(double t) {
 
 template <int D>
 void FluidSystem<D>::recomputeSurface(const Patch<D>& patch, double t) {
-    // 2D: the surface particles (layer 0) lie in order along the patch; the normal is the
-    // neighbours' chord turned by 90 degrees to the side of the initial normal, the spacing
-    // the mean distance to the neighbours. A closed curve wraps around.
-    if constexpr (D == 2) {
+    if constexpr (D == 2)
+        if (surfaceFromChords(patch)) return;
+    if constexpr (D >= 2) surfaceFromMotion(patch, t);
+}
+
+template <int D>
+bool FluidSystem<D>::surfaceFromChords(const Patch<D>& patch) {
+    // 2D walls generated along a curve (polyline, polygon, circle, ellipse) keep their surface
+    // particles (layer 0) in order along it: the normal is the neighbours' chord turned by 90
+    // degrees to the side of the initial normal, the spacing the mean distance to the
+    // neighbours; a closed curve wraps around. Exact for any deformation of a curved wall.
+    // False, with nothing changed, when storage order is not the order along the wall (boxWalls).
+    if constexpr (D != 2) {
+        return false;
+    } else {
         const auto& layer = walls.integer("layer");
         auto& normal = walls.vector("normal");
         auto& spacing = walls.scalar("spacing");
         auto& area = walls.scalar("area");
         const auto& n0 = walls.vector("initialNormal");
+        const auto& x0 = walls.vector("initialPosition");
         std::vector<std::size_t> surface;
         for (std::size_t w = patch.begin; w < patch.end; ++w)
             if (layer[w] == 0) surface.push_back(w);
         const std::size_t m = surface.size();
-        if (m < 3) return;
+        if (m < 3) return true;
+        for (std::size_t k = 1; k < m; ++k)
+            if ((x0[surface[k]] - x0[surface[k - 1]]).norm() > 1.5 * spacing[surface[k - 1]]) return false;
         const auto& x = walls.position;
         const bool closed = (x[surface.front()] - x[surface.back()]).norm() < 1.5 * spacing[surface.front()];
         for (std::size_t k = 0; k < m; ++k) {
@@ -158,24 +172,29 @@ void FluidSystem<D>::recomputeSurface(const Patch<D>& patch, double t) {
             // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
             area[surface[k]] = end ? spacing[surface[k]] : 0.5 * chord.norm();
         }
-    } else if constexpr (D == 3) {
-        // Nanson's formula from the motion itself, for every layer: area A0 |J F^-T n0|, the
-        // spacing stretched by the square root of the same ratio.
-        if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
-        const auto& x0 = walls.vector("initialPosition");
-        const auto& n0 = walls.vector("initialNormal");
-        const auto& area0 = walls.scalar("initialArea");
-        const auto& spacing0 = walls.scalar("initialSpacing");
-        auto& normal = walls.vector("normal");
-        auto& spacing = walls.scalar("spacing");
-        auto& area = walls.scalar("area");
-        for (std::size_t w = patch.begin; w < patch.end; ++w) {
-            const Vec<3> stretched = patch.motion->areaStretch(x0[w], n0[w], t);
-            const double ratio = stretched.norm();
-            normal[w] = stretched / ratio;
-            area[w] = area0[w] * ratio;
-            spacing[w] = spacing0[w] * std::sqrt(ratio);
-        }
+        return true;
+    }
+}
+
+template <int D>
+void FluidSystem<D>::surfaceFromMotion(const Patch<D>& patch, double t) {
+    // Nanson's formula from the motion itself, for every layer (3D surface particles, and 2D
+    // boxWalls, have no order along the wall): area A0 |J F^-T n0|, the spacing stretched by
+    // the same ratio to the power 1/(D-1).
+    if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
+    const auto& x0 = walls.vector("initialPosition");
+    const auto& n0 = walls.vector("initialNormal");
+    const auto& area0 = walls.scalar("initialArea");
+    const auto& spacing0 = walls.scalar("initialSpacing");
+    auto& normal = walls.vector("normal");
+    auto& spacing = walls.scalar("spacing");
+    auto& area = walls.scalar("area");
+    for (std::size_t w = patch.begin; w < patch.end; ++w) {
+        const Vec<D> stretched = patch.motion->areaStretch(x0[w], n0[w], t);
+        const double ratio = stretched.norm();
+        normal[w] = stretched / ratio;
+        area[w] = area0[w] * ratio;
+        spacing[w] = spacing0[w] * (D == 3 ? std::sqrt(ratio) : ratio);
     }
 }
 

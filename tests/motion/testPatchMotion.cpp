@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numbers>
 
 using namespace sph;
@@ -173,9 +174,11 @@ TEST(PatchMotion, TableInterpolatesAndMustCoverTheRun) {
     }
 }
 
-TEST(PatchMotion, DeformingPatchRecomputesNormalsAndSpacings) {
-    // A straight wall of 41 particles on y = 0 bulging into the fluid: the normals tilt away
-    // from the bulge's centre on its flanks and stay vertical at its top.
+namespace {
+
+// A straight wall of 41 particles on y = 0, stored in the given order of x / 0.05, under a
+// gaussianBulge of 0.2 at x = 1, evaluated at its full convex bulge (t = 1).
+std::unique_ptr<FluidSystem<2>> bulgedFloor(const std::vector<std::size_t>& order) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = Vec<2>(1.0, 0.5);
@@ -183,27 +186,63 @@ TEST(PatchMotion, DeformingPatchRecomputesNormalsAndSpacings) {
     fluid.addScalar("mass", 1.0);
     fluid.addVector("velocity", Vec<2>::Zero());
     ParticleSet<2> walls("walls");
-    walls.resize(41);
-    for (std::size_t k = 0; k < 41; ++k) walls.position[k] = Vec<2>(0.05 * k, 0.0);
+    walls.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) walls.position[k] = Vec<2>(0.05 * double(order[k]), 0.0);
     walls.addScalar("mass", 1.0);
     walls.addScalar("spacing", 0.05);
+    walls.addScalar("area", 0.05);
     walls.addVector("normal", Vec<2>(0, 1));
     walls.addInteger("patch", 0);
     walls.addInteger("layer", 0);
     std::vector<Patch<2>> patches(1);
     patches[0].name = "floor";
-    patches[0].end = 41;
+    patches[0].end = order.size();
     patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-9, 0.05, 0.0, 0.0});
     patches[0].motion = std::make_unique<GaussianBulge<2>>(dictionary("centre (1 0); amplitude 0.2; width 0.3; period 4;"));
     FluidModels<2> models{WendlandC2<2>(0.065), TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
-    FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-1, -1), Vec<2>(3, 2), Vec<2>::Zero(), 0.0);
-    system.evaluateRates(1.0);  // full convex bulge
-    const auto& n = system.walls.vector("normal");
-    EXPECT_NEAR(system.walls.position[20].y(), 0.2, 1e-14);
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-1, -1),
+                                                   Vec<2>(3, 2), Vec<2>::Zero(), 0.0);
+    system->evaluateRates(1.0);
+    return system;
+}
+
+std::vector<std::size_t> alongTheWall() {
+    std::vector<std::size_t> order(41);
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    return order;
+}
+
+}  // namespace
+
+TEST(PatchMotion, DeformingPatchRecomputesNormalsAndSpacings) {
+    // Stored along the wall (as polyline generates it): the chords of the moved neighbours.
+    // The normals tilt away from the bulge's centre on its flanks and stay vertical at its top.
+    const auto system = bulgedFloor(alongTheWall());
+    const auto& n = system->walls.vector("normal");
+    EXPECT_NEAR(system->walls.position[20].y(), 0.2, 1e-14);
     EXPECT_NEAR(n[20].x(), 0.0, 1e-12);
     EXPECT_LT(n[16].x(), -0.3);  // left flank leans left
     EXPECT_GT(n[24].x(), 0.3);
-    EXPECT_GT(system.walls.scalar("spacing")[16], 0.05);  // stretched over the bulge
-    EXPECT_NEAR(system.walls.vector("velocity")[20].norm(), 0.0, 1e-12);
+    EXPECT_GT(system->walls.scalar("spacing")[16], 0.05);  // stretched over the bulge
+    EXPECT_NEAR(system->walls.vector("velocity")[20].norm(), 0.0, 1e-12);
+}
+
+TEST(PatchMotion, DeformingPatchOutOfOrderTakesNormalsFromTheMotion) {
+    // The same wall stored out of order (as boxWalls stores a lattice): no chords between
+    // storage neighbours (a 2D boxWalls floor blew up at step 4 with them), the motion's normals
+    // and areas instead, which agree with the ordered wall's chords to their accuracy.
+    std::vector<std::size_t> shuffled;
+    for (std::size_t k = 0; k < 41; k += 2) shuffled.push_back(k);
+    for (std::size_t k = 1; k < 41; k += 2) shuffled.push_back(k);
+    const auto chords = bulgedFloor(alongTheWall()), motion = bulgedFloor(shuffled);
+    const auto& bulge = dynamic_cast<const GaussianBulge<2>&>(*motion->patches[0].motion);
+    for (std::size_t k = 1; k + 1 < 41; ++k) {
+        const std::size_t at = std::find(shuffled.begin(), shuffled.end(), k) - shuffled.begin();
+        const Vec<2> exact = bulge.areaStretch(Vec<2>(0.05 * double(k), 0.0), Vec<2>(0, 1), 1.0);
+        EXPECT_LT((motion->walls.vector("normal")[at] - exact.normalized()).norm(), 1e-14) << k;
+        EXPECT_NEAR(motion->walls.scalar("area")[at], 0.05 * exact.norm(), 1e-14) << k;
+        EXPECT_LT((motion->walls.vector("normal")[at] - chords->walls.vector("normal")[k]).norm(), 0.03) << k;
+        EXPECT_NEAR(motion->walls.scalar("area")[at], chords->walls.scalar("area")[k], 0.003) << k;
+    }
 }
