@@ -44,7 +44,12 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
     int lineNumber = 0;
     std::vector<std::string> header;
     std::vector<std::size_t> indices;  // time column first, then the compared columns
-    values_.resize(columns.size());
+    struct Row {
+        double t;
+        std::vector<double> values;
+        int line;
+    };
+    std::vector<Row> rows;
     while (std::getline(in, line)) {
         ++lineNumber;
         const auto first = line.find_first_not_of(" \t\r");
@@ -63,31 +68,39 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
             }
             continue;
         }
-        std::vector<double> row;
-        for (const std::size_t index : indices) {
+        Row row{0.0, {}, lineNumber};
+        for (std::size_t k = 0; k < indices.size(); ++k) {
             double value = 0.0;
-            const std::string cell = index < cells.size() ? cells[index] : std::string();
+            const std::string cell = indices[k] < cells.size() ? cells[indices[k]] : std::string();
             const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
             if (cell.empty() || error != std::errc() || end != cell.data() + cell.size())
-                throw FatalError(fmt::format("error: {}: column '{}' holds '{}', not a number", where(lineNumber), header[index], cell));
-            row.push_back(value);
+                throw FatalError(fmt::format("error: {}: column '{}' holds '{}', not a number", where(lineNumber), header[indices[k]], cell));
+            if (k == 0) row.t = value * timeScale;
+            else row.values.push_back(value * valueScale);
         }
-        const double t = row[0] * timeScale;
-        // Time increases; a coordinate runs either way, the direction its first two rows take.
-        const bool decreasing = along == Along::Coordinate && !times_.empty() && (times_.size() >= 2 ? times_[1] < times_[0] : t < times_[0]);
-        if (!times_.empty() && !(decreasing ? t < times_.back() : t > times_.back()))
-            throw FatalError(fmt::format("error: {}: {} {:g} does not come {} the previous row's {:g}; a reference's {} must {}", where(lineNumber),
-                                         abscissa, row[0], decreasing ? "before" : "after", times_.back() / timeScale, abscissa,
-                                         along == Along::Time ? "increase" : "increase or decrease throughout"));
-        times_.push_back(t);
-        for (std::size_t c = 0; c < columns.size(); ++c) values_[c].push_back(row[c + 1] * valueScale);
+        rows.push_back(std::move(row));
     }
     if (header.empty()) throw FatalError(fmt::format("error: '{}' has no header row", file_.string()));
-    if (times_.size() < 2)
-        throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), times_.size()));
-    if (times_.back() < times_.front()) {
-        std::reverse(times_.begin(), times_.end());
-        for (auto& column : values_) std::reverse(column.begin(), column.end());
+    if (rows.size() < 2)
+        throw FatalError(fmt::format("error: '{}' has {} rows of numbers; a reference needs at least 2", file_.string(), rows.size()));
+    // A coordinate may run either way, the direction its first two rows take. Rows that step
+    // back (digitised curves do) are sorted into place, stably, and the run says so.
+    const bool decreasing = along == Along::Coordinate && rows[1].t < rows[0].t;
+    std::vector<int> stepsBack;  // lines, in the file's own direction
+    for (std::size_t k = 1; k < rows.size(); ++k)
+        if (decreasing ? rows[k].t > rows[k - 1].t : rows[k].t < rows[k - 1].t) stepsBack.push_back(rows[k].line);
+    if (decreasing) std::reverse(rows.begin(), rows.end());
+    if (!stepsBack.empty()) {
+        std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.t < b.t; });
+        fmt::print("note: {}: {} row{} step{} back in {} (line{} {}{}); the reference is sorted by {}\n", file_.string(), stepsBack.size(),
+                   stepsBack.size() == 1 ? "" : "s", stepsBack.size() == 1 ? "s" : "", abscissa, stepsBack.size() == 1 ? "" : "s",
+                   fmt::join(stepsBack.begin(), stepsBack.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(stepsBack.size(), 5)), ", "),
+                   stepsBack.size() > 5 ? ", ..." : "", abscissa);
+    }
+    values_.resize(columns.size());
+    for (const Row& row : rows) {
+        times_.push_back(row.t);
+        for (std::size_t c = 0; c < columns.size(); ++c) values_[c].push_back(row.values[c]);
     }
     accumulators_.resize(columns.size());
 }
@@ -95,7 +108,8 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
 std::optional<std::vector<double>> ReferenceSeries::at(double t) const {
     if (t < times_.front() || t > times_.back()) return std::nullopt;
     const std::size_t upper = std::max<std::size_t>(1, static_cast<std::size_t>(std::lower_bound(times_.begin(), times_.end(), t) - times_.begin()));
-    const double weight = (t - times_[upper - 1]) / (times_[upper] - times_[upper - 1]);
+    const double width = times_[upper] - times_[upper - 1];  // 0 between rows of the same time
+    const double weight = width > 0.0 ? (t - times_[upper - 1]) / width : 1.0;
     std::vector<double> result;
     for (const auto& column : values_) result.push_back(column[upper - 1] + weight * (column[upper] - column[upper - 1]));
     return result;

@@ -11,10 +11,12 @@
 //       valueScale  0.05715;        // units of the quantity per unit of the file's values (default 1)
 //       scale       0.05715;        // errors are divided by this (default 1: absolute errors)
 //   }
-// A missing file or column, a cell that is not a number, or a time that does not increase is
-// an error naming the file, line and column, before the first step.
+// A missing file or column or a cell that is not a number is an error naming the file, line and
+// column, before the first step. Rows that step back in time (digitised curves do) are sorted
+// into place, stably, with a note naming their lines; rows of the same time make a step.
 // A reference profile (along a line, Along::Coordinate) reads `coordinate` and
-// `coordinateScale` instead of `time` and `timeScale`; its coordinate may increase or decrease.
+// `coordinateScale` instead of `time` and `timeScale`; its coordinate may increase or decrease
+// (the direction of its first two rows), and is sorted the same way.
 #pragma once
 
 #include "functionObjects/ErrorNorms.hpp"
@@ -47,7 +49,7 @@ private:
     std::filesystem::path file_;
     std::vector<std::string> quantities_;
     Along along_;
-    std::vector<double> times_;  // or coordinates, increasing
+    std::vector<double> times_;  // or coordinates, non-decreasing
     std::vector<std::vector<double>> values_;  // [column][row]
     double scale_;
     std::vector<ErrorAccumulator> accumulators_;
