@@ -404,6 +404,7 @@ void Dictionary::merge(const Dictionary& other) {
 Entry* Dictionary::lookup(const std::string& keyword) const {
     for (Entry& e : entries_)
         if (e.keyword() == keyword) return &e;
+    if (std::find(missed_.begin(), missed_.end(), keyword) == missed_.end()) missed_.push_back(keyword);
     return nullptr;
 }
 
@@ -427,12 +428,49 @@ const Entry* Dictionary::findEntry(const std::string& keyword) const {
     return e;
 }
 
+namespace {
+
+// Levenshtein distance, case-insensitive: a keyword's misspellings are a letter or two away.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The candidate whose spelling is nearest to `word`, with up to a third of its letters wrong;
+// empty when none is that near.
+std::string nearestSpelling(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string nearest;
+    std::size_t best = std::max<std::size_t>(1, word.size() / 3) + 1;
+    for (const std::string& candidate : candidates) {
+        const std::size_t distance = editDistance(word, candidate);
+        if (distance < best) best = distance, nearest = candidate;
+    }
+    return nearest;
+}
+
+}  // namespace
+
 const Entry& Dictionary::entry(const std::string& keyword) const {
     const Entry* e = findEntry(keyword);
     if (!e) {
         std::string message = "keyword '" + keyword + "' is missing from dictionary '" + name_ + "'";
-        SourceLocation at = where_;
-        throw FatalError(at, message);
+        std::vector<std::string> unused;
+        for (const Entry& other : entries_)
+            if (!other.used) unused.push_back(other.keyword());
+        const std::string nearest = nearestSpelling(keyword, unused);
+        if (!nearest.empty()) message += " (is '" + nearest + "' at " + lookup(nearest)->where().str() + " misspelt?)";
+        throw FatalError(where_, message);
     }
     return *e;
 }
@@ -618,7 +656,9 @@ void Dictionary::collectUnused(std::vector<std::string>& out) const {
     for (const Entry& e : entries_) {
         if (e.keyword() == "FoamFile") continue;  // file header, informational only
         if (!e.used) {
-            out.push_back(e.where().str() + ": '" + e.keyword() + "' in dictionary '" + name_ + "'");
+            const std::string nearest = nearestSpelling(e.keyword(), missed_);
+            out.push_back(e.where().str() + ": '" + e.keyword() + "' in dictionary '" + name_ + "'" +
+                          (nearest.empty() ? "" : " (did you mean '" + nearest + "'?)"));
         } else if (e.isDictionary()) {
             e.dictionary().collectUnused(out);
         }

@@ -89,7 +89,9 @@ public:
     // A FatalError for a value that read correctly but is not acceptable.
     [[noreturn]] void fail(const std::string& keyword, const std::string& message) const;
 
-    // FatalError listing every entry (recursively) that no look-up has used.
+    // FatalError listing every entry (recursively) that no look-up has used, each with the
+    // keyword a look-up asked for and did not find that its spelling is nearest to, if any is
+    // near ("did you mean").
     void checkUnused() const;
 
     // Parser interface.
@@ -103,6 +105,7 @@ private:
     std::string name_;
     SourceLocation where_;
     mutable std::vector<Entry> entries_;
+    mutable std::vector<std::string> missed_;  // keywords a look-up asked for and did not find
 };
 
 }  // namespace sph

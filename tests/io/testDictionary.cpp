@@ -151,6 +151,24 @@ TEST(Dictionary, UnusedKeywordsAreReported) {
     EXPECT_EQ(message.find("FoamFile"), std::string::npos) << message;
 }
 
+TEST(Dictionary, MisspeltKeywordsSayWhatWasMeant) {
+    // An unused entry names the keyword asked for and not found that it nearly spells.
+    const Dictionary d = parse("endTime 1;\ncourrant 0.2;\nInterval 3;\nwriteFormat binary;\n");
+    d.get<double>("endTime");
+    d.getOrDefault("courant", 0.1);
+    d.getOrDefault("writeInterval", 0.1);
+    const std::string message = errorOf([&] { d.checkUnused(); });
+    EXPECT_NE(message.find("testDict:2:1: 'courrant' in dictionary 'testDict' (did you mean 'courant'?)"), std::string::npos) << message;
+    EXPECT_NE(message.find("testDict:3:1: 'Interval' in dictionary 'testDict'\n"), std::string::npos) << "too far from writeInterval: " << message;
+    EXPECT_NE(message.find("'writeFormat' in dictionary 'testDict'"), std::string::npos) << message;
+    EXPECT_EQ(message.find("'writeFormat' in dictionary 'testDict' (did you mean"), std::string::npos) << message;
+    // A missing keyword names the unused entry that nearly spells it.
+    const Dictionary e = parse("endTme 1;\nrho0 1000;\n");
+    e.get<double>("rho0");
+    EXPECT_EQ(errorOf([&] { e.get<double>("endTime"); }),
+              "testDict: error: keyword 'endTime' is missing from dictionary 'testDict' (is 'endTme' at testDict:1:1 misspelt?)");
+}
+
 TEST(Dictionary, DeepNestingIsAnErrorNotAStackOverflow) {
     // 20,000 levels crashed the recursive parser (SIGSEGV); 100 is far beyond any case.
     std::string deep;
