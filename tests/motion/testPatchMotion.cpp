@@ -50,6 +50,26 @@ TEST(PatchMotion, OscillationWithAPhaseStartsWhereThePatchWasGenerated) {
     expectConsistentKinematics<2>(motion, Vec<2>(1, 2), Vec<2>(0, 1), 0.3);
 }
 
+TEST(PatchMotion, OscillationRampsUpWithoutAJump) {
+    const Oscillation<2> ramped(dictionary("amplitude (0.1 0); frequency 0.5; phase 0; rampTime 2;"));
+    const Oscillation<2> plain(dictionary("amplitude (0.1 0); frequency 0.5; phase 0;"));
+    const Vec<2> x0(1, 2), n0(0, 1);
+    const auto start = ramped.at(x0, n0, 0.0);
+    EXPECT_EQ(start.position, x0);
+    EXPECT_EQ(start.velocity.norm(), 0.0);
+    EXPECT_EQ(start.acceleration.norm(), 0.0);  // the plain one starts at -A omega^2 sin(0) = 0 but with velocity A omega
+    EXPECT_NEAR(plain.at(x0, n0, 0.0).velocity.x(), 0.1 * std::numbers::pi, 1e-15);
+    // Half way: r(1/2) = 1/2.
+    EXPECT_NEAR((ramped.at(x0, n0, 1.0).position - x0).x(), 0.5 * (plain.at(x0, n0, 1.0).position - x0).x(), 1e-15);
+    for (double t : {0.3, 1.0, 1.7}) expectConsistentKinematics<2>(ramped, x0, n0, t);
+    // At the ramp's end position, velocity and acceleration meet the plain motion's.
+    const auto before = ramped.at(x0, n0, 2.0 - 1e-9), after = plain.at(x0, n0, 2.0 + 1e-9);
+    EXPECT_NEAR((before.position - after.position).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((before.velocity - after.velocity).norm(), 0.0, 1e-8);
+    EXPECT_NEAR((before.acceleration - after.acceleration).norm(), 0.0, 1e-7);
+    EXPECT_EQ(ramped.at(x0, n0, 3.1).position, plain.at(x0, n0, 3.1).position);
+}
+
 TEST(PatchMotion, RotationTurnsPositionsAndNormals) {
     const Rotation motion(dictionary("centre (0 0); omega 0.5; amplitude 0.2; frequency 1;"));
     const double t = 1.0;  // theta = 0.5 + 0.2 sin(2 pi) = 0.5
