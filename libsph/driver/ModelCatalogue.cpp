@@ -6,6 +6,7 @@
 #include "equationsOfState/EquationOfState.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "kernels/Kernel.hpp"
+#include "motion/PatchMotion.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
 #include "viscosity/Viscosity.hpp"
 
@@ -41,6 +42,7 @@ std::string modelCatalogue() {
     text += listFamily(makeDensityDiffusionRegistry<2>(), "system/sphSchemes, densityDiffusion { type ...; }");
     text += listFamily(makeEquationOfStateRegistry(), "constant/fluidProperties, equationOfState { type ...; c0 ...; }");
     text += listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }");
+    text += listFamily(makePatchMotionRegistry<2>(), "constant/boundaryProperties, <patch> { motion { type ...; } }");
     text += listFamily(makeTimeIntegratorRegistry<2>(), "system/timeIntegration, integrator { type ...; }");
     text += listFamily(makeFunctionObjectRegistry<2>(), "system/controlDict, functions { <name> { type ...; } }");
     text += listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");

@@ -18,10 +18,12 @@ PatchMotionRegistry<D> makePatchMotionRegistry() {
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<Translation<D>>(dict); });
     registry.add("slidingSurface", {"the surface slides along itself: particles stay, carry U (a driven lid)", "", {{"velocity", "", "U, tangential"}}},
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<SlidingSurface<D>>(dict); });
-    registry.add("oscillation", {"rigid, x0 + A [sin(2 pi f t + phase) - sin(phase)]", "", {{"amplitude", "", "A"}, {"frequency", "", "f [Hz]"}, {"phase", "0", "[rad]; pi/2: A cos(2 pi f t) about x0 + A, from rest"}}},
+    registry.add("oscillation", {"rigid, x0 + A r(t) [sin(2 pi f t + phase) - sin(phase)]", "",
+                                 {{"amplitude", "", "A"}, {"frequency", "", "f [Hz]"}, {"phase", "0", "[rad]; pi/2: A cos(2 pi f t) about x0 + A, from rest"},
+                                  {"rampTime", "0", "T_r [s]: r = tau - sin(2 pi tau)/(2 pi), tau = t/T_r, then 1"}}},
                  [](const Dictionary& dict, const std::string&) -> Made { return std::make_unique<Oscillation<D>>(dict); });
     registry.add("rotation", {"rigid 2D rotation, theta = omega t + amplitude sin(2 pi f t)", "",
-                              {{"centre", "", ""}, {"omega", "0", "[rad/s]"}, {"amplitude", "0", "[rad]"}, {"frequency", "0", "[Hz]"}}},
+                              {{"centre", "", "the axis (x y)"}, {"omega", "0", "[rad/s]"}, {"amplitude", "0", "[rad]"}, {"frequency", "0", "[Hz]"}}},
                  [](const Dictionary& dict, const std::string&) -> Made {
                      if constexpr (D == 2) return std::make_unique<Rotation>(dict);
                      dict.fail("type", "rotation is implemented for 2D cases only");

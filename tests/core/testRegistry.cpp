@@ -1,5 +1,7 @@
 #include "core/Registry.hpp"
+#include "driver/ModelCatalogue.hpp"
 #include "kernels/Kernel.hpp"
+#include "motion/PatchMotion.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,4 +51,14 @@ TEST(Registry, SelectedKernelHasTheRequestedSmoothingLength) {
     const auto kernel = sph::makeKernelRegistry<3>().create("wendlandC4", at(1, 1), 0.25);
     ASSERT_TRUE(std::holds_alternative<sph::WendlandC4<3>>(kernel));
     EXPECT_DOUBLE_EQ(std::get<sph::WendlandC4<3>>(kernel).h, 0.25);
+}
+
+TEST(ModelCatalogue, ListsEveryFamilyWithTheMotionsAndTheirKeywords) {
+    const std::string catalogue = sph::modelCatalogue();
+    for (const char* family : {"kernel (", "viscosity (", "densityDiffusion (", "equationOfState (", "boundary model (", "motion (",
+                               "time integrator (", "function object (", "analytic solution ("})
+        EXPECT_NE(catalogue.find(family), std::string::npos) << family;
+    for (const std::string& name : sph::makePatchMotionRegistry<2>().names())
+        EXPECT_NE(catalogue.find("    " + name + " "), std::string::npos) << name;
+    EXPECT_NE(catalogue.find("rampTime"), std::string::npos);
 }
