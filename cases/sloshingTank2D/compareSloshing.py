@@ -3,14 +3,13 @@
 experiment of Faltinsen et al. (2000), Fig. 7: the probe 0.05 m from the left wall, in the
 moving tank's frame.
 
-For each written time (fluid.csv) the elevation is where the kernel-interpolated fluid volume
-fraction sum_k V_k W(|x - x_k|) falls through 1/2 along the vertical through the probe (one
-splashed particle does not read as the level); eta = that height - 0.6 m. Writes
-sloshingError.txt (RMS and max |eta - eta_exp| over the experiment's samples, per case) and
-sloshingComparison.png into the first case given.
+Reads the case's `gauge` (a waveGauge function object at the probe's foot, moving with the
+tank: the depth where the kernel-interpolated fluid volume fraction falls through 1/2, so one
+splashed particle does not read as the level); eta = depth - 0.6 m. Writes sloshingError.txt
+(RMS and max |eta - eta_exp| over the experiment's samples, per case) and
+sloshingComparison.png into the first case given. Any spacing: nothing here depends on it.
 Usage: compareSloshing.py [case ...]
 """
-import csv
 import glob
 import math
 import os
@@ -18,40 +17,21 @@ import sys
 
 import numpy as np
 
-DX, DEPTH, PROBE = 0.02, 0.6, 0.05
-AMPLITUDE, PERIOD = 0.032, 1.3
-H = 1.3 * DX  # the case's Wendland C2 smoothing length
+DEPTH = 0.6
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def wendland(r):
-    q = np.minimum(r / H, 2.0)
-    return 7.0 / (4.0 * math.pi * H * H) * (1.0 - q / 2.0) ** 4 * (2.0 * q + 1.0)
-
-
-def elevation(x, y, t):
-    probe = PROBE + AMPLITUDE * (math.cos(2.0 * math.pi * t / PERIOD) - 1.0)  # the tank frame moves
-    near = np.abs(x - probe) < 2.0 * H
-    heights = np.arange(0.0, 1.2, 0.002)
-    fraction = [np.sum(DX * DX * wendland(np.hypot(x[near] - probe, y[near] - z))) for z in heights]
-    wet = [z for z, f in zip(heights, fraction) if f >= 0.5]
-    return (max(wet) if wet else 0.0) - DEPTH
-
-
 def read_case(case):
-    rows = []
-    for directory in glob.glob(os.path.join(case, "[0-9]*")):
-        path = os.path.join(directory, "fluid.csv")
-        if not os.path.exists(path):
-            continue
-        with open(path) as f:
-            points = [(float(r["x"]), float(r["y"])) for r in csv.DictReader(f)]
-        t = float(os.path.basename(directory))
-        x, y = np.array([p[0] for p in points]), np.array([p[1] for p in points])
-        rows.append((t, elevation(x, y, t)))
+    rows = {}
+    for name in sorted(glob.glob(os.path.join(case, "postProcessing", "gauge", "*", "elevation.dat"))):
+        with open(name) as f:
+            for line in f:
+                if not line.startswith("#"):
+                    t, depth = (float(v) for v in line.split()[:2])
+                    rows[t] = depth - DEPTH  # a restarted run repeats its start time: one row each
     if not rows:
-        sys.exit("compareSloshing.py: no %s/<time>/fluid.csv; run the solver first" % case)
-    return sorted(rows)
+        sys.exit("compareSloshing.py: no %s/postProcessing/gauge/<time>/elevation.dat; run the solver first" % case)
+    return sorted(rows.items())
 
 
 def read_experiment():

@@ -9,6 +9,7 @@
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/SurgeFront.hpp"
 #include "functionObjects/WallPenetrations.hpp"
+#include "functionObjects/WaveGauge.hpp"
 
 namespace sph {
 
@@ -27,7 +28,7 @@ template <int D>
 FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
     const CoefficientDoc interval{"executeInterval", "0", "simulated time between executions (0: every step)"};
     const CoefficientDoc reference{"reference", "none",
-                                   "{ file; time; columns (...); timeScale; valueScale; scale; }: error "
+                                   "{ file; time; columns (...); timeScale; valueScale; valueOffset; scale; }: error "
                                    "over time against a CSV"};
     FunctionObjectRegistry<D> registry("function object");
     add<SurgeFront<D>>(registry, "surgeFront",
@@ -53,6 +54,15 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                          {"water height above gauge points, over time",
                           "",
                           {{"points", "", "gauge points ((x y ...) ...)"}, {"radius", "h", "reach around the vertical"}, reference, interval}});
+    add<WaveGauge<D>>(registry, "waveGauge",
+                      {"free-surface elevation where the interpolated volume fraction crosses a threshold, over time",
+                       "",
+                       {{"points", "", "gauge points ((x y ...) ...); each gauge reads upwards, against gravity"},
+                        {"threshold", "0.5", "volume fraction sum_j V_j W_ij read as the surface"},
+                        {"length", "to the domain's boundary", "length of each gauge's line"},
+                        {"patch", "none (lab frame)", "the gauges move with this patch's motion"},
+                        reference,
+                        interval}});
     add<FieldErrorNorm<D>>(registry, "errorNorm",
                            {"L1, L2, Linf of a field against an analytic solution",
                             "",

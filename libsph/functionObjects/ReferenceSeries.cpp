@@ -34,6 +34,7 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
     const auto columns = dict.get<std::vector<std::string>>("columns");
     const double timeScale = dict.getPositiveOrDefault(abscissa + "Scale", 1.0);
     const double valueScale = dict.getOrDefault("valueScale", 1.0);
+    const double valueOffset = dict.getOrDefault("valueOffset", 0.0);
     if (columns.size() != quantities.size())
         dict.fail("columns", fmt::format("lists {} columns, but this function object compares {} quantities ({})", columns.size(), quantities.size(),
                                          fmt::join(quantities, ", ")));
@@ -76,7 +77,7 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
             if (cell.empty() || error != std::errc() || end != cell.data() + cell.size())
                 throw FatalError(fmt::format("error: {}: column '{}' holds '{}', not a number", where(lineNumber), header[indices[k]], cell));
             if (k == 0) row.t = value * timeScale;
-            else row.values.push_back(value * valueScale);
+            else row.values.push_back(value * valueScale + valueOffset);
         }
         rows.push_back(std::move(row));
     }

@@ -9,6 +9,8 @@
 //       columns     (Z);            // one per compared quantity, in the function object's order
 //       timeScale   0.0534;         // seconds per unit of the file's time (default 1)
 //       valueScale  0.05715;        // units of the quantity per unit of the file's values (default 1)
+//       valueOffset 0;              // added after scaling, in the quantity's units (default 0): a
+//                                   // wave gauge at the floor compares with elevations about the still level
 //       scale       0.05715;        // errors are divided by this (default 1: absolute errors)
 //   }
 // A missing file or column or a cell that is not a number is an error naming the file, line and

@@ -2,12 +2,15 @@
 // against an analytic field and against a reference time series, gauge heights, and the
 // errors a case can make in them (caught before the first step).
 #include "analytic/TaylorGreen2D.hpp"
+#include "boundaryModels/RepulsiveWall.hpp"
 #include "functionObjects/ColumnHeight.hpp"
 #include "functionObjects/FieldErrorNorm.hpp"
 #include "functionObjects/FieldTotals.hpp"
 #include "functionObjects/LineSample.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/ReferenceSeries.hpp"
+#include "functionObjects/WaveGauge.hpp"
+#include "motion/Translation.hpp"
 #include "physics/FluidSystem.hpp"
 #include "support/CaseFixture.hpp"
 
@@ -24,7 +27,8 @@ using namespace sph::test;
 constexpr double dx = 0.04;
 constexpr int n = 25;  // a 1 x 1 block of fluid in the domain [-0.1, 1.1]^2
 
-std::unique_ptr<FluidSystem<2>> makeBlock() {
+// With `tankMotion`, one wall particle in a corner of the domain makes a patch "tank" that moves so.
+std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMotion = nullptr) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(n * n);
     fluid.addScalar("density", 1000.0);
@@ -38,9 +42,22 @@ std::unique_ptr<FluidSystem<2>> makeBlock() {
         }
     ParticleSet<2> walls("walls");
     walls.addScalar("mass", 0.0);
+    std::vector<Patch<2>> patches;
+    if (tankMotion) {
+        walls.resize(1);
+        walls.position[0] = Vec<2>(1.09, 1.09);
+        walls.addScalar("spacing", dx);
+        walls.addVector("normal", Vec<2>(0, 1));
+        walls.addInteger("patch", 0);
+        patches.resize(1);
+        patches[0].name = "tank";
+        patches[0].end = 1;
+        patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-9, dx, 0.0, 0.0});
+        patches[0].motion = std::move(tankMotion);
+    }
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), LinearEquationOfState(1000.0, 10.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
-    auto system = std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::vector<Patch<2>>{}, Vec<2>(-0.1, -0.1),
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1),
                                                    Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
     system->evaluateRates(0.0);  // builds the cell list the interpolation searches
     return system;
@@ -119,6 +136,15 @@ TEST(ReferenceSeries, InterpolatesInTimeAndAccumulatesNormsOverTheOverlap) {
     EXPECT_DOUBLE_EQ(errors[0].norms.l1, 2.0 / 4.0);
     EXPECT_DOUBLE_EQ(errors[0].norms.l2, std::sqrt(5.0) / 4.0);
     EXPECT_DOUBLE_EQ(errors[0].norms.linf, 3.0 / 4.0);
+}
+
+TEST(ReferenceSeries, ValueOffsetIsAddedAfterScaling) {
+    const auto dir = freshDirectory();
+    writeFile(dir / "ref.csv", "t,eta\n0,-0.01\n1,0.03\n");
+    const Dictionary dict = Dictionary::fromString("file \"ref.csv\"; time t; columns (eta); valueScale 2; valueOffset 0.6;", "reference");
+    const ReferenceSeries reference(dict, dir, {"elevation"});
+    EXPECT_DOUBLE_EQ(reference.at(0.0)->at(0), 0.58);
+    EXPECT_DOUBLE_EQ(reference.at(0.5)->at(0), 0.62);
 }
 
 TEST(ReferenceSeries, BadFilesAreErrorsNamingFileLineAndColumn) {
@@ -223,6 +249,60 @@ TEST(ColumnHeight, GaugesReadTheBlockHeightAboveThemAndZeroWhenDry) {
     EXPECT_NEAR(h[0], 1.0, 1e-12);  // the top particle at 0.98 plus half a spacing
     EXPECT_NEAR(h[1], 0.8, 1e-12);
     EXPECT_EQ(h[2], 0.0);  // 0.07 from the nearest column, beyond the radius h = 0.052
+}
+
+TEST(WaveGauge, ReadsTheBlockSurfaceWhereTheVolumeFractionFallsThroughAHalf) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const Dictionary dict = Dictionary::fromString("type waveGauge; points ((0.5 0) (0.5 0.2) (1.05 0));", "gauges");
+    WaveGauge<2> gauges(dict, contextFor(dir, *system));
+    const std::vector<double> eta = gauges.elevations(*system, 0.0);
+    // The block's continuum surface is at 1.0 (top row at 0.98, half a spacing below); the
+    // lattice's kernel sum crosses 1/2 within a few hundredths of a spacing of it.
+    EXPECT_NEAR(eta[0], 1.0, 0.05 * dx);
+    EXPECT_NEAR(eta[1], 0.8, 0.05 * dx);
+    EXPECT_EQ(eta[2], 0.0);  // 1.25 dx beside the block's side: the fraction stays below 1/2
+    // A higher threshold reads the surface lower.
+    WaveGauge<2> strict(Dictionary::fromString("type waveGauge; points ((0.5 0)); threshold 0.9;", "gauges"), contextFor(dir, *system));
+    EXPECT_LT(strict.elevations(*system, 0.0)[0], eta[0] - 0.2 * dx);
+}
+
+TEST(WaveGauge, ASplashedParticleAboveTheSurfaceDoesNotReadAsTheLevel) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    system->fluid.position[0] = Vec<2>(0.5, 1.09);  // on the gauge's line, beyond the top row's support
+    system->evaluateRates(0.0);
+    WaveGauge<2> gauge(Dictionary::fromString("type waveGauge; points ((0.5 0));", "gauge"), contextFor(dir, *system));
+    const ColumnHeight<2> highest(Dictionary::fromString("type columnHeight; points ((0.5 0));", "column"), contextFor(dir, *system));
+    EXPECT_NEAR(gauge.elevations(*system, 0.0)[0], 1.0, 0.05 * dx);
+    EXPECT_NEAR(highest.heights(*system)[0], 1.11, 1e-12);  // the highest particle does
+}
+
+TEST(WaveGauge, GaugesOnAMovingPatchFollowItAndWriteTheirSeries) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock(std::make_unique<Translation<2>>(Dictionary::fromString("velocity (0.3 0);", "motion")));
+    const Dictionary dict = Dictionary::fromString("type waveGauge; points ((0.85 0)); patch tank; length 1.05;", "gauges");
+    WaveGauge<2> moving(dict, contextFor(dir, *system));
+    WaveGauge<2> fixed(Dictionary::fromString("type waveGauge; points ((0.85 0));", "gauges"), contextFor(dir, *system));
+    EXPECT_NEAR(moving.elevations(*system, 0.0)[0], 1.0, 0.05 * dx);
+    EXPECT_EQ(moving.elevations(*system, 1.0)[0], 0.0);  // carried to x = 1.15, beside the block
+    EXPECT_NEAR(fixed.elevations(*system, 1.0)[0], 1.0, 0.05 * dx);
+    moving.execute(*system, 0.0);
+    const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/elevation.dat");
+    EXPECT_EQ(header, "# time eta(0.85 0)");
+    EXPECT_EQ(row.substr(0, 4), "0 0.");  // just below 1.0
+}
+
+TEST(WaveGauge, BadThresholdPatchOrLineAreErrorsBeforeTheFirstStep) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock(std::make_unique<Translation<2>>(Dictionary::fromString("velocity (0.3 0);", "motion")));
+    const auto error = [&](const std::string& entries) {
+        return errorOf([&] { WaveGauge<2>(Dictionary::fromString("type waveGauge; " + entries, "gauges"), contextFor(dir, *system)); });
+    };
+    EXPECT_NE(error("points ((0.5 0)); threshold 1.5;").find("1.5 is not a volume fraction between 0 and 1"), std::string::npos);
+    EXPECT_NE(error("points ((0.5 0)); patch lid;").find("no wall patch 'lid'; the patches are: tank"), std::string::npos);
+    EXPECT_NE(error("points ((0.5 0)); length -1;").find("length"), std::string::npos);
+    EXPECT_NE(error("points ((2 0));").find("gauge 0 at (2 0) lies outside the domain"), std::string::npos);
 }
 
 TEST(FieldTotals, MassEnergyAndMomentumOfTheBlock) {

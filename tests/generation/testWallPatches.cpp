@@ -84,8 +84,11 @@ TEST(WallPatches, PolygonVertexStandsForHalfOfEachSide) {
     Vec<2> total = Vec<2>::Zero();
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
         const bool vertex = (walls.positions[k] - Vec<2>(0, 0)).norm() < 1e-12 || (walls.positions[k] - Vec<2>(1, 1)).norm() < 1e-12;
-        if (vertex) EXPECT_NEAR(walls.areas[k], 0.25 / std::sqrt(2.0), 1e-15);
-        else if ((walls.positions[k] - Vec<2>(0.5, 0)).norm() < 1e-12) EXPECT_DOUBLE_EQ(walls.areas[k], 0.25);
+        if (vertex) {
+            EXPECT_NEAR(walls.areas[k], 0.25 / std::sqrt(2.0), 1e-15);
+        } else if ((walls.positions[k] - Vec<2>(0.5, 0)).norm() < 1e-12) {
+            EXPECT_DOUBLE_EQ(walls.areas[k], 0.25);
+        }
         total += walls.areas[k] * walls.normals[k];
     }
     EXPECT_LT(total.norm(), 1e-14);  // a closed surface

@@ -17,7 +17,8 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
   (damBreakWallPressure2D at H/dx = 20, 40, 80: blow-up, wall-pressure error against De Courcy
   et al. 2024, penetrations at every step), sloshing (sloshingTank2D against Faltinsen et al.
   2000), a steep fast floor bulge (steepBulge2D, 50 % of the depth at 5x and 7.5x
-  deformingTank2D's wall speed), 3D still water (hydrostaticTank3D at H/dx = 8 and 10);
+  deformingTank2D's wall speed; steepBulge3D), 3D still water (hydrostaticTank3D), each flow at
+  three resolutions;
 each with the wall time that produced it (runs two at a time, one thread each). Penetrations
 are counted at every step (the wallPenetrations function object).
 
@@ -280,7 +281,7 @@ def flow_case(case, model, patch, layout, spacing=None, edits=(), layers=4):
     directory = prepare(case, model + ("-%g" % spacing if spacing else "") + "".join("-" + tag for tag, _, _ in edits))
     particles = os.path.join(directory, "system", "generateParticlesDict")
     if spacing:
-        edit(particles, r"spacing\s+[0-9.e-]+;", "spacing     %g;" % spacing)
+        edit(particles, r"spacing\s+[0-9.e-]+;", "spacing     %.12g;" % spacing)
     if layout == "layers":
         edit(particles, r"layers 1; firstLayerOffset 0;", "layers %d;" % layers)
     properties = os.path.join(directory, "constant", "boundaryProperties")
@@ -308,35 +309,37 @@ def dam_break_row(model, patch, layout, resolution):
     return (model, resolution, errors, most_behind_wall(directory), seconds, failure)
 
 
-def sloshing_row(model, patch, layout):
-    directory = flow_case("sloshingTank2D", model, patch, layout, layers=3)
+def sloshing_row(model, patch, layout, resolution):
+    """sloshingTank2D at dx = H/resolution (H = 0.6 m; 30 shipped)."""
+    directory = flow_case("sloshingTank2D", model, patch, layout, 0.6 / resolution, layers=3)
     generate(directory)
     seconds, failure = run(directory)
     errors = compare(("sloshingTank2D", "compareSloshing.py"), directory) if not failure else None
-    return (model, errors, most_behind_wall(directory), seconds, failure)
+    return (model, resolution, errors, most_behind_wall(directory), seconds, failure)
 
 
-def bulge_row(model, patch, layout, period):
-    """steepBulge2D: the floor bulging by 0.3 (half the depth) over `period` (1.2 s shipped)."""
+def bulge_row(model, patch, layout, period, resolution):
+    """steepBulge2D: the floor bulging by 0.3 (half the depth) over `period` (1.2 s shipped), at
+    dx = H/resolution (H = 0.6 m; 30 shipped)."""
     edits = [("T%g" % period, "constant/boundaryProperties", (r"period [0-9.e-]+;", "period %g;" % period)),
              ("", "system/controlDict", (r"endTime\s+[0-9.e-]+;", "endTime %g;" % period))]
-    directory = flow_case("steepBulge2D", model, patch, "surface", edits=edits)
+    directory = flow_case("steepBulge2D", model, patch, "surface", 0.6 / resolution, edits=edits)
     if layout == "layers":
         edit(os.path.join(directory, "system", "generateParticlesDict"), r"tank\s*\{[^}]*\}",
              "tank { type boxWalls; min (0 0); max (2 1); layers 3; open (yMax); }")
     generate(directory)
     seconds, failure = run(directory)
     noise, _, leaks = bulge_noise(directory)
-    return (model, period, noise, int(leaks), seconds, failure)
+    return (model, period, resolution, noise, int(leaks), seconds, failure)
 
 
-def bulge3d_row(model, patch, layout):
-    """steepBulge3D as shipped (half the depth in 0.3 s)."""
-    directory = flow_case("steepBulge3D", model, patch, layout, layers=3)
+def bulge3d_row(model, patch, layout, resolution):
+    """steepBulge3D (half the depth in 0.3 s) at dx = H/resolution (H = 0.4 m; 10 shipped)."""
+    directory = flow_case("steepBulge3D", model, patch, layout, 0.4 / resolution, layers=3)
     generate(directory)
     seconds, failure = run(directory)
     noise, last, leaks = bulge_noise(directory)
-    return (model, noise, last, int(leaks), seconds, failure)
+    return (model, resolution, noise, last, int(leaks), seconds, failure)
 
 
 def bulge_noise(directory):
@@ -357,12 +360,14 @@ def box_row(model, patch, layout, resolution):
 
 
 def flow_rows():
-    resolutions = (20,) if QUICK else (20, 40, 80)
-    dam = in_parallel(dam_break_row, [(m, p, l, r) for r in resolutions for m, p, l in FLOW_MODELS])
-    slosh = [] if QUICK else in_parallel(sloshing_row, FLOW_MODELS)
-    bulge = in_parallel(bulge_row, [(m, p, l, period) for period in (1.2, 0.8) for m, p, l in FLOW_MODELS])
-    bulge3d = in_parallel(bulge3d_row, FLOW_MODELS)
-    box = in_parallel(box_row, [(m, p, l, r) for r in ((8,) if QUICK else (8, 10)) for m, p, l in FLOW_MODELS])
+    """Every flow at three resolutions (the shipped one among them), the coarsest with --quick."""
+    pick = lambda resolutions: resolutions[:1] if QUICK else resolutions  # noqa: E731
+    dam = in_parallel(dam_break_row, [(m, p, l, r) for r in pick((20, 40, 80)) for m, p, l in FLOW_MODELS])
+    slosh = in_parallel(sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in FLOW_MODELS])
+    bulge = in_parallel(bulge_row, [(m, p, l, period, r) for period, r in [(1.2, r) for r in pick((15, 30, 60))] + [(0.8, 30)]
+                                    for m, p, l in FLOW_MODELS])
+    bulge3d = in_parallel(bulge3d_row, [(m, p, l, r) for r in pick((8, 10, 12)) for m, p, l in FLOW_MODELS])
+    box = in_parallel(box_row, [(m, p, l, r) for r in pick((6, 8, 10)) for m, p, l in FLOW_MODELS])
     return dam, slosh, bulge, bulge3d, box
 
 
@@ -381,23 +386,26 @@ def flow_lines(dam, slosh, bulge, bulge3d, box):
         lines.append("| %s | %d | %s | %d | %.1f | %s |" % (model, resolution, values, leaks, seconds, outcome(failure)))
     if slosh:
         lines += ["", "### Sloshing (sloshingTank2D: Faltinsen et al. 2000, Fig. 7, to t = 10 s)", "",
-                  "Free-surface elevation 0.05 m from the left wall, in the tank's frame, against the experiment.", "",
-                  "| model | RMS error [m] | max error [m] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|"]
-        for model, errors, leaks, seconds, failure in slosh:
+                  "Free-surface elevation 0.05 m from the left wall, in the tank's frame (a waveGauge moving with the tank), against "
+                  "the experiment; H = 0.6 m, dx = 0.02 shipped.", "",
+                  "| model | H/dx | RMS error [m] | max error [m] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|---|"]
+        for model, resolution, errors, leaks, seconds, failure in slosh:
             values = "%.4f | %.4f" % (errors[0], errors[1]) if errors else " | "
-            lines.append("| %s | %s | %d | %.1f | %s |" % (model, values, leaks, seconds, outcome(failure)))
+            lines.append("| %s | %d | %s | %d | %.1f | %s |" % (model, resolution, values, leaks, seconds, outcome(failure)))
     lines += ["", "### Steep fast floor bulge (steepBulge2D: amplitude 0.3 = half the depth, one period)", "",
               "Period 1.2 s (shipped): 5x deformingTank2D's peak wall speed (0.1 pi m/s), 0.8 s: 7.5x. Pressure noise: RMS of p about its "
-              "neighbours' mean within 2.5 dx, over the fluid within 2h of the floor near the bulge, averaged over the written times.", "",
-              "| model | period [s] | pressure noise [Pa] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|"]
-    for model, period, noise, leaks, seconds, failure in bulge:
-        lines.append("| %s | %g | %s | %d | %.1f | %s |" % (model, period, "%.1f" % noise if noise is not None else "", leaks, seconds, outcome(failure)))
+              "neighbours' mean within 2.5 dx, over the fluid within 2h of the floor near the bulge, averaged over the written times "
+              "(H = 0.6 m, dx = 0.02 shipped; the noise in Pa scales with rho g dx).", "",
+              "| model | period [s] | H/dx | pressure noise [Pa] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|---|"]
+    for model, period, resolution, noise, leaks, seconds, failure in bulge:
+        lines.append("| %s | %g | %d | %s | %d | %.1f | %s |" % (model, period, resolution, "%.1f" % noise if noise is not None else "", leaks, seconds,
+                                                            outcome(failure)))
     lines += ["", "### Steep fast floor bulge in 3D (steepBulge3D: amplitude 0.2 = half the depth, width 0.15, period 1.2 s)", "",
-              "The same measures over the fluid within 1.5 widths of the bulge's axis (rho g dx = 392 Pa); a run that blew up is "
-              "measured over what it wrote (last time).", "",
-              "| model | pressure noise [Pa] | last written time [s] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|"]
-    for model, noise, last, leaks, seconds, failure in bulge3d:
-        lines.append("| %s | %.1f | %g | %d | %.1f | %s |" % (model, noise, last, leaks, seconds, outcome(failure)))
+              "The same measures over the fluid within 1.5 widths of the bulge's axis (H = 0.4 m, H/dx = 10 shipped: rho g dx = 392 Pa); "
+              "a run that blew up is measured over what it wrote (last time).", "",
+              "| model | H/dx | pressure noise [Pa] | last written time [s] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|---|"]
+    for model, resolution, noise, last, leaks, seconds, failure in bulge3d:
+        lines.append("| %s | %d | %.1f | %g | %d | %.1f | %s |" % (model, resolution, noise, last, leaks, seconds, outcome(failure)))
     lines += ["", "### 3D still water (hydrostaticTank3D: box 1 x 0.6 m, H = 0.4 m, t = 4 s)", "",
               "At t = 4 (checkStillWater.py): kinetic energy per unit mass over g H; near-floor pressure: RMS of p - rho g (H - z) "
               "over rho g H within 2h of the floor; floor gap: mean height of the lowest particle of each dx x dx column over dx "
