@@ -2,13 +2,14 @@
 """Compares the downstream-wall pressure of damBreakWallPressure2D (and its variants) with the
 delta-SPH curves of De Courcy et al. (2024) at sensors P1-P4.
 
-Reads <case>/postProcessing/sensors/<t0>/p.dat for each case directory given (default: this
-one), normalises as the reference (T = t sqrt(g/H), P = p/(rho g H)), averages both over
+Reads <case>/postProcessing/sensors/<t0>/p.dat (the probes dx/2 in front of the wall) for each
+case directory given (default: this one), or with --wall the wallPressure sensors on the wall
+(postProcessing/wallSensors/<t0>/pressure.dat, their raw signal), normalises as the reference (T = t sqrt(g/H), P = p/(rho g H)), averages both over
 windows of Delta T = 0.1 from T = 2 to 7 (the raw impact peaks are acoustic and resolution
 dependent; the reference is digitised and steps back in time, so it is sorted first) and
 writes pressureError.txt (RMS of the window-mean difference per sensor, and the most fluid
 particles behind the wall at any step) and pressureComparison.png into the first case given.
-Usage: comparePressure.py [case ...]
+Usage: comparePressure.py [--wall] [case ...]
 """
 import glob
 import math
@@ -27,10 +28,11 @@ def read_reference(sensor):
     return sorted((float(t), float(p)) for t, p in rows)
 
 
-def read_sensors(case):
-    files = sorted(glob.glob(os.path.join(case, "postProcessing", "sensors", "*", "p.dat")))
+def read_sensors(case, wall):
+    pattern = os.path.join(case, "postProcessing", *(("wallSensors", "*", "pressure.dat") if wall else ("sensors", "*", "p.dat")))
+    files = sorted(glob.glob(pattern))
     if not files:
-        sys.exit("comparePressure.py: no %s/postProcessing/sensors/*/p.dat; run the solver first" % case)
+        sys.exit("comparePressure.py: no %s; run the solver first" % pattern)
     rows = []
     for name in files:
         with open(name) as f:
@@ -54,13 +56,14 @@ def most_behind_wall(case):
 
 
 def main():
-    cases = sys.argv[1:] or [HERE]
+    wall = "--wall" in sys.argv
+    cases = [a for a in sys.argv[1:] if a != "--wall"] or [HERE]
     references = {s: read_reference(s) for s in SENSORS}
     reference_means = {s: window_means([t for t, _ in references[s]], [p for _, p in references[s]]) for s in SENSORS}
     lines = ["# case, RMS of the Delta T = 0.1 window means against De Courcy et al. (2024) at P1 P2 P3 P4, most fluid particles behind the wall at any step"]
     curves = {}
     for case in cases:
-        times, values = read_sensors(case)
+        times, values = read_sensors(case, wall)
         errors = []
         for k, sensor in enumerate(SENSORS):
             means = window_means(times, values[k])
@@ -69,7 +72,7 @@ def main():
         name = os.path.basename(os.path.abspath(case))
         curves[name] = (times, values)
         lines.append("%s %s %d" % (name, " ".join("%.3f" % e for e in errors), most_behind_wall(case)))
-    with open(os.path.join(cases[0], "pressureError.txt"), "w") as f:
+    with open(os.path.join(cases[0], "wallPressureError.txt" if wall else "pressureError.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     try:
@@ -89,7 +92,7 @@ def main():
     axes[0].legend(fontsize=7)
     axes[-1].set_xlabel("t sqrt(g / H)")
     figure.tight_layout()
-    figure.savefig(os.path.join(cases[0], "pressureComparison.png"), dpi=120)
+    figure.savefig(os.path.join(cases[0], "wallPressureComparison.png" if wall else "pressureComparison.png"), dpi=120)
 
 
 main()

@@ -32,6 +32,9 @@ public:
     // True when the patch's particles enter the fluid's kernel sums (dummy, dynamic boundary).
     virtual bool actsThroughWallParticles() const = 0;
 
+    // True when the model sets its particles' pressure each evaluation (what a wallPressure
+    // sensor reads; on other patches the sensor extrapolates the fluid as Adami et al. do).
+    virtual bool setsWallPressure() const { return actsThroughWallParticles(); }
     // The fewest layers of wall particles the model needs for a kernel of this support; a
     // wall-force model needs exactly one, on the wall surface.
     virtual int minimumLayers(double /*support*/, double /*dx*/) const { return 1; }

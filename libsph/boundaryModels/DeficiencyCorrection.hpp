@@ -74,6 +74,7 @@ public:
     DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName);
 
     bool actsThroughWallParticles() const override { return false; }
+    bool setsWallPressure() const override { return true; }  // p_j, extrapolated for the virtual particles
     bool needsUncorrectedAcceleration() const override { return calibration_ != DeficiencyCalibration::WallPressure; }
     std::string describe() const override;
     void addFields(FluidSystem<D>& system) override;

@@ -9,6 +9,7 @@
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/SurgeFront.hpp"
 #include "functionObjects/WallPenetrations.hpp"
+#include "functionObjects/WallPressureSensors.hpp"
 #include "functionObjects/WaveGauge.hpp"
 
 namespace sph {
@@ -63,6 +64,16 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                         {"patch", "none (lab frame)", "the gauges move with this patch's motion"},
                         reference,
                         interval}});
+    add<WallPressureSensors<D>>(registry, "wallPressure",
+                                {"pressure sensors on a wall patch (area-weighted wall-particle pressure), over time",
+                                 "Adami, Hu & Adams, J. Comput. Phys. 231 (2012) 7057 (the extrapolation where the model sets none)",
+                                 {{"patch", "", "the wall patch the sensors sit on"},
+                                  {"points", "", "sensor centres on the wall ((x y ...) ...), where the patch was generated"},
+                                  {"size", "the wall spacing", "sensor diameter (2D: length along the wall)"},
+                                  {"timeWindow", "0 (none)", "trailing moving average over this simulated time, beside the raw signal"},
+                                  {"source", "model", "model: the wall particles' pressure where the model sets one; fluid: the fluid extrapolated"},
+                                  reference,
+                                  interval}});
     add<FieldErrorNorm<D>>(registry, "errorNorm",
                            {"L1, L2, Linf of a field against an analytic solution",
                             "",

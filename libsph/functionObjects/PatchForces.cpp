@@ -1,5 +1,7 @@
 #include "functionObjects/PatchForces.hpp"
 
+#include "functionObjects/PatchByName.hpp"
+
 #include "physics/FluidSystem.hpp"
 #include "physics/FluidWallPair.hpp"
 
@@ -15,13 +17,7 @@ PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<
     const auto& patches = context.system.patches;
     std::string header = "# time";
     for (const std::string& name : names_) {
-        std::size_t k = 0;
-        while (k < patches.size() && patches[k].name != name) ++k;
-        if (k == patches.size()) {
-            std::vector<std::string> valid;
-            for (const Patch<D>& patch : patches) valid.push_back(patch.name);
-            dict.fail("patches", fmt::format("no patch '{}'; the patches are: {}", name, fmt::join(valid, ", ")));
-        }
+        const auto k = static_cast<std::size_t>(&patchByName(dict, "patches", name, context.system) - patches.data());
         if (!patches[k].model->actsThroughWallParticles())
             dict.fail("patches",
                       fmt::format("patch '{}' is a wall-force patch ({}); forces reports wall-particle patches (a free body's loads: bodyMotion)",

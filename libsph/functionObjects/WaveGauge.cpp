@@ -1,6 +1,7 @@
 #include "functionObjects/WaveGauge.hpp"
 
 #include "functionObjects/KernelInterpolation.hpp"
+#include "functionObjects/PatchByName.hpp"
 #include "physics/FluidSystem.hpp"
 
 #include <fmt/format.h>
@@ -41,15 +42,7 @@ WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& 
         const double reach = distanceToBoundary(point, up_, system.domainMin(), system.domainMax());
         lengths_.push_back(dict.found("length") ? dict.getPositiveOrDefault("length", reach) : reach);
     }
-    if (!patchName_.empty()) {
-        std::vector<std::string> names;
-        for (const Patch<D>& patch : system.patches) {
-            names.push_back(patch.name);
-            if (patch.name == patchName_) motion_ = patch.motion.get();
-        }
-        if (std::find(names.begin(), names.end(), patchName_) == names.end())
-            dict.fail("patch", fmt::format("no wall patch '{}'; the patches are: {}", patchName_, fmt::join(names, ", ")));
-    }
+    if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, system).motion.get();
     const auto& m = system.fluid.scalar("mass");
     const auto& rho = system.fluid.scalar("density");
     const double spacing = system.fluid.size() > 0 ? std::pow(m[0] / rho[0], 1.0 / D) : system.smoothingLength();

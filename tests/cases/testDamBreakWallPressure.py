@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """damBreakWallPressure2D at H/dx = 20 to T = 8 with the correction's defaults, compared by the
 case's own comparePressure.py: pins the figures doc/boundarySuite.md reports for this row
-(RMS of the Delta T = 0.1 window means against De Courcy et al. 2024, P1-P4) and the count of
-fluid behind the wall at every step. Run by CTest with SPHKIT_BIN set to the build's binaries."""
+(RMS of the Delta T = 0.1 window means against De Courcy et al. 2024, P1-P4, read by probes dx/2
+in front of the wall and by the wallPressure sensors on it) and the count of fluid behind the
+wall at every step. Run by CTest with SPHKIT_BIN set to the build's binaries."""
 import os
 import shutil
 import subprocess
@@ -35,6 +36,12 @@ class DamBreakWallPressure(unittest.TestCase):
             for measured, documented in zip(values[:4], (0.469, 0.263, 0.226, 0.217)):
                 self.assertAlmostEqual(measured, documented, delta=0.02)
             self.assertEqual(values[4], 0, "fluid behind the wall at some step")
+            # The wallPressure sensors on the wall (the model's p_j), as the case's README reports them.
+            result = subprocess.run(["/usr/bin/python3", os.path.join(CASE, "comparePressure.py"), "--wall", case], check=True,
+                                    capture_output=True, text=True)
+            values = [float(v) for v in result.stdout.strip().splitlines()[-1].split()[1:]]
+            for measured, documented in zip(values[:4], (0.527, 0.392, 0.306, 0.118)):
+                self.assertAlmostEqual(measured, documented, delta=0.02)
             self.assertTrue(os.path.exists(os.path.join(case, "pressureError.txt")), "the comparison writes into the case it reads")
 
 

@@ -2,6 +2,7 @@
 // against an analytic field and against a reference time series, gauge heights, and the
 // errors a case can make in them (caught before the first step).
 #include "analytic/TaylorGreen2D.hpp"
+#include "boundaryModels/DummyParticlesAdami2012.hpp"
 #include "boundaryModels/RepulsiveWall.hpp"
 #include "functionObjects/ColumnHeight.hpp"
 #include "functionObjects/FieldErrorNorm.hpp"
@@ -9,6 +10,7 @@
 #include "functionObjects/LineSample.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/ReferenceSeries.hpp"
+#include "functionObjects/WallPressureSensors.hpp"
 #include "functionObjects/WaveGauge.hpp"
 #include "motion/Translation.hpp"
 #include "physics/FluidSystem.hpp"
@@ -27,8 +29,7 @@ using namespace sph::test;
 constexpr double dx = 0.04;
 constexpr int n = 25;  // a 1 x 1 block of fluid in the domain [-0.1, 1.1]^2
 
-// With `tankMotion`, one wall particle in a corner of the domain makes a patch "tank" that moves so.
-std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMotion = nullptr) {
+ParticleSet<2> blockFluid() {
     ParticleSet<2> fluid("fluid");
     fluid.resize(n * n);
     fluid.addScalar("density", 1000.0);
@@ -40,6 +41,11 @@ std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMo
             fluid.position[k] = {(i + 0.5) * dx, (j + 0.5) * dx};
             fluid.globalId[k] = static_cast<std::int64_t>(k);
         }
+    return fluid;
+}
+
+// With `tankMotion`, one wall particle in a corner of the domain makes a patch "tank" that moves so.
+std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMotion = nullptr) {
     ParticleSet<2> walls("walls");
     walls.addScalar("mass", 0.0);
     std::vector<Patch<2>> patches;
@@ -57,10 +63,45 @@ std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMo
     }
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), LinearEquationOfState(1000.0, 10.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
-    auto system = std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1),
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), blockFluid(), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1),
                                                    Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
     system->evaluateRates(0.0);  // builds the cell list the interpolation searches
     return system;
+}
+
+// The block on a floor: one layer of wall particles on y = 0 from x = -0.08 to 1.08, a patch
+// "floor" with `model` and, optionally, a motion; hydrostatic fluid pressure rho0 g (1 - y).
+std::unique_ptr<FluidSystem<2>> makeBlockOnAFloor(std::unique_ptr<BoundaryModel<2>> model, std::unique_ptr<PatchMotion<2>> motion = nullptr) {
+    ParticleSet<2> walls("walls");
+    constexpr int count = 30;
+    walls.resize(count);
+    for (int k = 0; k < count; ++k) {
+        walls.position[static_cast<std::size_t>(k)] = Vec<2>(-0.08 + k * dx, 0.0);
+        walls.globalId[static_cast<std::size_t>(k)] = k;
+    }
+    walls.addScalar("mass", 1000.0 * dx * dx);
+    walls.addScalar("spacing", dx);
+    walls.addScalar("area", dx);
+    walls.addVector("normal", Vec<2>(0, 1));
+    walls.addInteger("patch", 0);
+    walls.addInteger("layer", 0);
+    std::vector<Patch<2>> patches(1);
+    patches[0].name = "floor";
+    patches[0].end = count;
+    patches[0].model = std::move(model);
+    patches[0].motion = std::move(motion);
+    FluidModels<2> models{WendlandC2<2>(1.3 * dx), LinearEquationOfState(1000.0, 10.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), blockFluid(), std::move(walls), std::move(patches),
+                                                   Vec<2>(-0.1, -0.1), Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
+    system->evaluateRates(0.0);
+    auto& p = system->fluid.scalar("pressure");
+    for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 1000.0 * 9.81 * (1.0 - system->fluid.position[i].y());
+    return system;
+}
+
+std::unique_ptr<BoundaryModel<2>> dummyParticles() {
+    return std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("noSlip no;", "floor"));
 }
 
 FunctionObjectContext<2> contextFor(const std::filesystem::path& dir, const FluidSystem<2>& system) {
@@ -300,9 +341,84 @@ TEST(WaveGauge, BadThresholdPatchOrLineAreErrorsBeforeTheFirstStep) {
         return errorOf([&] { WaveGauge<2>(Dictionary::fromString("type waveGauge; " + entries, "gauges"), contextFor(dir, *system)); });
     };
     EXPECT_NE(error("points ((0.5 0)); threshold 1.5;").find("1.5 is not a volume fraction between 0 and 1"), std::string::npos);
-    EXPECT_NE(error("points ((0.5 0)); patch lid;").find("no wall patch 'lid'; the patches are: tank"), std::string::npos);
+    EXPECT_NE(error("points ((0.5 0)); patch lid;").find("no patch 'lid'; the patches are: tank"), std::string::npos);
     EXPECT_NE(error("points ((0.5 0)); length -1;").find("length"), std::string::npos);
     EXPECT_NE(error("points ((2 0));").find("gauge 0 at (2 0) lies outside the domain"), std::string::npos);
+}
+
+TEST(WallPressureSensors, ExtrapolateTheFluidWhereTheModelSetsNoWallPressure) {
+    // Adami's extrapolation of a hydrostatic field at uniform density is rho0 g H exactly.
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-9, dx, 0.0, 0.0}));
+    const Dictionary dict = Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0) (0.3 0)); size 0.1;", "sensors");
+    const WallPressureSensors<2> sensors(dict, contextFor(dir, *system));
+    for (const double p : sensors.pressures(*system, 0.0)) EXPECT_NEAR(p, 1000.0 * 9.81, 1e-9);
+}
+
+TEST(WallPressureSensors, AverageTheModelsWallPressureOverTheirFootprintByArea) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles());
+    auto& p = system->walls.scalar("pressure");
+    for (std::size_t j = 0; j < p.size(); ++j) p[j] = 100.0 * system->walls.position[j].x();
+    const auto read = [&](const std::string& entries) {
+        return WallPressureSensors<2>(Dictionary::fromString("type wallPressure; patch floor; " + entries, "sensors"), contextFor(dir, *system))
+            .pressures(*system, 0.0);
+    };
+    EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], 50.0, 1e-9);  // 0.44 ... 0.56, symmetric
+    EXPECT_NEAR(read("points ((0.51 0)); size 0.001;")[0], 52.0, 1e-9);  // smaller than the spacing: the nearest particle
+    system->walls.scalar("area")[13] = 3.0 * dx;  // the particle at x = 0.44 stands for three spacings
+    EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], (3.0 * 44.0 + 48.0 + 52.0 + 56.0) / 6.0, 1e-9);
+}
+
+TEST(WallPressureSensors, SourceFluidExtrapolatesWhereTheModelSetsAPressure) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles());
+    system->walls.scalar("pressure").assign(system->walls.size(), -1.0);  // what the model would read: ignored
+    const WallPressureSensors<2> sensor(
+        Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); size 0.1; source fluid;", "sensors"), contextFor(dir, *system));
+    EXPECT_NEAR(sensor.pressures(*system, 0.0)[0], 1000.0 * 9.81, 1e-9);
+}
+
+TEST(WallPressureSensors, SensorsMoveWithTheirPatch) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles(), std::make_unique<Translation<2>>(Dictionary::fromString("velocity (0.3 0);", "motion")));
+    const WallPressureSensors<2> sensor(Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); size 0.18;", "sensors"),
+                                        contextFor(dir, *system));
+    system->evaluateRates(0.5);  // the floor moved by 0.15
+    auto& p = system->walls.scalar("pressure");
+    for (std::size_t j = 0; j < p.size(); ++j) p[j] = 100.0 * system->walls.position[j].x();
+    EXPECT_NEAR(sensor.pressures(*system, 0.5)[0], 65.0, 1e-9);
+}
+
+TEST(WallPressureSensors, TheTimeWindowAveragesTheSignalTrailingAndWritesBoth) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles());
+    WallPressureSensors<2> sensor(Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); timeWindow 0.3;", "sensors"),
+                                  contextFor(dir, *system));
+    // A signal rising as t: its trailing mean is t/2 until the window fills, then t - 0.15.
+    std::vector<double> mean;
+    for (int k = 0; k <= 10; ++k) mean.push_back(sensor.averaged(0.1 * k, {0.1 * k})[0]);
+    EXPECT_NEAR(mean[0], 0.0, 1e-12);
+    EXPECT_NEAR(mean[2], 0.1, 1e-12);
+    EXPECT_NEAR(mean[10], 0.85, 1e-12);
+    WallPressureSensors<2> writing(Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); timeWindow 0.3;", "sensors"),
+                                   contextFor(dir, *system));
+    writing.execute(*system, 0.0);
+    const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/pressure.dat");
+    EXPECT_EQ(header, "# time p(0.5 0) pAveraged(0.5 0)");
+}
+
+TEST(WallPressureSensors, BadPatchSensorOrSizeAreErrorsBeforeTheFirstStep) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles());
+    const auto error = [&](const std::string& entries) {
+        return errorOf([&] { WallPressureSensors<2>(Dictionary::fromString("type wallPressure; " + entries, "sensors"), contextFor(dir, *system)); });
+    };
+    EXPECT_NE(error("patch lid; points ((0.5 0));").find("no patch 'lid'; the patches are: floor"), std::string::npos);
+    EXPECT_NE(error("patch floor; points ((0.52 0.5));").find("sensor 0 at (0.52 0.5) is 0.5 from the surface of patch 'floor'"), std::string::npos);
+    EXPECT_NE(error("patch floor; points ((0.5 0)); size 0;").find("size"), std::string::npos);
+    EXPECT_NE(error("patch floor; points ((0.5 0)); timeWindow -1;").find("timeWindow"), std::string::npos);
+    EXPECT_NE(error("patch floor; points ((0.5 0)); source wall;").find("unknown source 'wall'; valid sources are: model"), std::string::npos);
 }
 
 TEST(FieldTotals, MassEnergyAndMomentumOfTheBlock) {
