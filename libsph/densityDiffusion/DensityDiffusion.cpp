@@ -18,6 +18,11 @@ DensityDiffusionRegistry<D> makeDensityDiffusionRegistry() {
                  [](const Dictionary& dict, const ModelContext& c) {
                      return DensityDiffusion<D>{Fourtakas2019<D>(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0, c.rho0, c.stiffness, c.exponent)};
                  });
+    registry.add("antuono", {"delta-SPH diffusion with the renormalised density gradient (a hydrostatic gradient is not diffused)",
+                             "Antuono et al., Comput. Phys. Commun. 181 (2010) 532; Marrone et al., CMAME 200 (2011) 1526", {delta}},
+                 [](const Dictionary& dict, const ModelContext& c) {
+                     return DensityDiffusion<D>{Antuono2010(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0)};
+                 });
     return registry;
 }
 
@@ -28,6 +33,7 @@ std::string describe(const DensityDiffusion<D>& diffusion) {
             using T = std::decay_t<decltype(d)>;
             if constexpr (std::is_same_v<T, NoDensityDiffusion>) return "none";
             else if constexpr (std::is_same_v<T, MolteniColagrossi2009>) return fmt::format("molteniColagrossi: delta {:g}", d.delta);
+            else if constexpr (std::is_same_v<T, Antuono2010>) return fmt::format("antuono: delta {:g}", d.delta);
             else return fmt::format("fourtakas: delta {:g}", d.delta);
         },
         diffusion);

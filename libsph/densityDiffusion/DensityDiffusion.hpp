@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/Registry.hpp"
+#include "densityDiffusion/Antuono2010.hpp"
 #include "densityDiffusion/Fourtakas2019.hpp"
 #include "densityDiffusion/MolteniColagrossi2009.hpp"
 #include "densityDiffusion/NoDensityDiffusion.hpp"
@@ -14,7 +15,7 @@
 namespace sph {
 
 template <int D>
-using DensityDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>>;
+using DensityDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>, Antuono2010>;
 
 template <int D>
 using DensityDiffusionRegistry = Registry<DensityDiffusion<D>, const Dictionary&, const ModelContext&>;

@@ -18,12 +18,13 @@ struct CellOrderedFluid {
     std::vector<Vec<D>> velocity;              // continuity, viscosity
     std::vector<double> density;               // viscosity, density diffusion
     std::vector<double> volume;                // density diffusion
+    std::vector<Vec<D>> densityGradient;       // delta-SPH's renormalised gradient
     std::vector<std::vector<Vec<D>>> acceleration;  // per thread
     std::vector<std::vector<double>> densityRate;   // per thread, continuity only
 
     std::size_t bytes() const {
         std::size_t total = (mass.capacity() + pressureOverDensity2.capacity() + density.capacity() + volume.capacity()) * sizeof(double) +
-                            velocity.capacity() * sizeof(Vec<D>);
+                            (velocity.capacity() + densityGradient.capacity()) * sizeof(Vec<D>);
         for (const auto& a : acceleration) total += a.capacity() * sizeof(Vec<D>);
         for (const auto& r : densityRate) total += r.capacity() * sizeof(double);
         return total;

@@ -3,6 +3,8 @@
 #include "physics/FluidSystem.hpp"
 #include "physics/FluidWallPair.hpp"
 
+#include <Eigen/LU>  // delta-SPH's renormalisation matrix
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -333,6 +335,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     constexpr bool Pressure = !ViscousOnly;
     constexpr bool DensityRate = Continuity && !ViscousOnly;
     constexpr bool Diffuses = DensityRate && Diffusion::enabled;
+    constexpr bool Gradient = Diffuses && usesDensityGradient<Diffusion>;
     constexpr bool ReadsVelocity = DensityRate || Viscosity::enabled;
     constexpr bool ReadsDensity = Viscosity::enabled || Diffuses;
     constexpr bool AlongVelocity = actsAlongVelocity<Viscosity>;
@@ -373,6 +376,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     if constexpr (ReadsVelocity) ordered.velocity.resize(n);
     if constexpr (ReadsDensity) ordered.density.resize(n);
     if constexpr (Diffuses) ordered.volume.resize(n);
+    if constexpr (Gradient) ordered.densityGradient.resize(n);
     ordered.acceleration.resize(threads);
     if constexpr (DensityRate) ordered.densityRate.resize(threads);
     double* const mK = ordered.mass.data();
@@ -380,6 +384,7 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     Vec<D>* const vK = ordered.velocity.data();
     double* const rhoK = ordered.density.data();
     double* const volumeK = ordered.volume.data();
+    double* const gradientK = Gradient && n > 0 ? ordered.densityGradient.data()->data() : nullptr;  // D doubles per place
 
     // Each thread's own copy of the models: the compiler then knows that no store in the pair
     // loop changes them, and hoists their case-wide branches out of the loop.
@@ -422,6 +427,33 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
             return count;
         };
 
+        if constexpr (Gradient) {
+            // The renormalised density gradients (Antuono2010.hpp), before any pair reads them.
+            withWraps([&](auto wraps) {
+#pragma omp for schedule(static, chunk)
+                for (std::size_t k = 0; k < n; ++k) {
+                    std::array<double, D> xk;
+                    for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
+                    if (cells.cellAt(k) != stencilCell) {
+                        stencilCell = cells.cellAt(k);
+                        stencil = cells.stencilRanges(cells.sortedPosition(k));
+                    }
+                    const std::size_t count = listNeighbours(cells, stencil, xk, 0, wraps);
+                    Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
+                    Vec<D> sum = Vec<D>::Zero();
+                    for (std::size_t q = 0; q < count; ++q) {
+                        const std::size_t l = neighbours[q];
+                        Vec<D> r;
+                        for (int d = 0; d < D; ++d) r[d] = cells.template separation<decltype(wraps)::value>(xk[d] - xs[l * D + d], d);
+                        const double VF = volumeK[l] * kernel.gradientFactor(r.norm());
+                        moment.noalias() -= (VF * r) * r.transpose();
+                        sum += ((rhoK[l] - rhoK[k]) * VF) * r;
+                    }
+                    const Vec<D> gradient = moment.determinant() > 0.1 ? Vec<D>(moment.inverse() * sum) : sum;
+                    for (int d = 0; d < D; ++d) gradientK[k * D + d] = gradient[d];
+                }  // implicit barrier: every gradient is in place
+            });
+        }
         withWraps([&](auto wraps) {
 #pragma omp for schedule(static, chunk) nowait
             for (std::size_t k = 0; k < n; ++k) {
@@ -449,6 +481,9 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 [[maybe_unused]] const double pTermKk = Pressure ? pTermK[k] : 0.0;
                 [[maybe_unused]] const double rhoKk = ReadsDensity ? rhoK[k] : 0.0;
                 [[maybe_unused]] const double volumeKk = Diffuses ? volumeK[k] : 0.0;
+                [[maybe_unused]] std::array<double, D> gradientKk{};
+                if constexpr (Gradient)
+                    for (int d = 0; d < D; ++d) gradientKk[d] = gradientK[k * D + d];
                 double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateK = 0.0;
 #pragma omp simd reduction(+ : a0, a1, a2, densityRateK) if (simd : lanes > 1)
                 for (std::size_t q = 0; q < padded; ++q) {
@@ -489,9 +524,15 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                         double toK = mK[l] * divergencePerMass, toNeighbourDensity = mKk * divergencePerMass;
                         if constexpr (Diffuses) {
                             double diffusionToK = 0.0, diffusionToL = 0.0;
-                            double gravityDotR = 0.0;
-                            for (int d = 0; d < D; ++d) gravityDotR += gravity[d] * r[d];
-                            diffusion.pairRates(gravityDotR, r2, inverseRegularisedR2, rhoKk, rhoK[l], F, diffusionToK, diffusionToL);
+                            if constexpr (Gradient) {
+                                double gradientSumDotR = 0.0;
+                                for (int d = 0; d < D; ++d) gradientSumDotR += (gradientKk[d] + gradientK[l * D + d]) * r[d];
+                                diffusion.pairRates(r2, inverseRegularisedR2, rhoKk, rhoK[l], F, gradientSumDotR, diffusionToK, diffusionToL);
+                            } else {
+                                double gravityDotR = 0.0;
+                                for (int d = 0; d < D; ++d) gravityDotR += gravity[d] * r[d];
+                                diffusion.pairRates(gravityDotR, r2, inverseRegularisedR2, rhoKk, rhoK[l], F, diffusionToK, diffusionToL);
+                            }
                             toK += diffusionToK * volumeK[l];
                             toNeighbourDensity += diffusionToL * volumeKk;
                         }
@@ -603,7 +644,7 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->setGravity(gravity, supportRadius_);
     // The diffusion as the pair loop evaluates it: Fourtakas' term beyond its series' reach is a
     // type of its own, so that the loop over pairs never branches to std::pow.
-    using PairDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>, Fourtakas2019<D, false>>;
+    using PairDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>, Fourtakas2019<D, false>, Antuono2010>;
     const PairDiffusion pairDiffusion = std::visit(
         [](const auto& diffusion) -> PairDiffusion {
             if constexpr (std::is_same_v<std::decay_t<decltype(diffusion)>, Fourtakas2019<D>>)

@@ -7,6 +7,7 @@
 
 #include "support/BlockDomain.hpp"
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -70,8 +71,9 @@ ParticleSet<D> wallLayers(const Scene<D>& s) {
 }
 
 // With periodicX, the block's x extent is the period: pairs and wall pairs across it count.
+// With antuono, the diffusion is delta-SPH's with the renormalised density gradient instead of Fourtakas'.
 template <int D>
-void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX = false) {
+void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX = false, bool antuono = false) {
     Scene<D> s;
     s.c0 = c0;
     const double period = s.perSide * s.dx;
@@ -83,8 +85,9 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     };
     const WendlandC2<D> kernel(s.h);
     const TaitEquationOfState eos(s.rho0, s.c0, s.gamma, 0.0);
-    FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0),
-                          Fourtakas2019<D>(s.delta, s.h, s.c0, s.rho0, eos.B, s.gamma), DensityFormulation::Continuity};
+    const DensityDiffusion<D> diffusion = antuono ? DensityDiffusion<D>(Antuono2010(s.delta, s.h, s.c0))
+                                                  : DensityDiffusion<D>(Fourtakas2019<D>(s.delta, s.h, s.c0, s.rho0, eos.B, s.gamma));
+    FluidModels<D> models{kernel, eos, ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0), diffusion, DensityFormulation::Continuity};
     FluidSystem<D> system(std::move(models), disorderedBlock(s, 17), wallLayers(s), {}, domain.min, domain.max, s.gravity, 0.0, domain.periodic);
     // Wall particles with their own pressure, density, velocity and viscous velocity (no
     // boundary model here sets them).
@@ -107,6 +110,21 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     const auto& m = system.fluid.scalar("mass");
     const auto& rho = system.fluid.scalar("density");
     const double radius = 2.0 * s.h, eta2 = 0.01 * s.h * s.h;
+    // Antuono et al.: <grad rho>^L_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i the inverse of
+    // sum_j V_j (x_j - x_i) (x) grad_i W_ij (unrenormalised where its determinant is below 0.1).
+    std::vector<Vec<D>> gradient(x.size(), Vec<D>::Zero());
+    for (std::size_t i = 0; antuono && i < x.size(); ++i) {
+        Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
+        Vec<D> sum = Vec<D>::Zero();
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            const Vec<D> r = separation(x[i], x[j]);
+            if (j == i || r.norm() >= radius) continue;
+            const Vec<D> gradW = kernel.gradientFactor(r.norm()) * r;
+            moment += (m[j] / rho[j]) * (-r) * gradW.transpose();
+            sum += (rho[j] - rho[i]) * (m[j] / rho[j]) * gradW;
+        }
+        gradient[i] = moment.determinant() > 0.1 ? Vec<D>(moment.inverse() * sum) : sum;
+    }
     double worstAcceleration = 0.0, worstRate = 0.0, scaleAcceleration = 0.0, scaleRate = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         Vec<D> a = s.gravity;
@@ -126,9 +144,13 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
                 a -= m[j] * (-s.alpha * s.c0 * mu / (0.5 * (rho[i] + rho[j]))) * gradW;
             }
             drho += m[j] * vij.dot(gradW);
-            // Fourtakas et al. (2019): rho^H_ji = rho0 [(1 - rho0 g.r_ij / B)^(1/gamma) - 1]
-            const double hydrostatic = s.rho0 * (std::pow(1.0 - s.rho0 * s.gravity.dot(r) / eos.B, 1.0 / s.gamma) - 1.0);
-            drho += 2.0 * s.delta * s.h * s.c0 * ((rho[i] - rho[j]) + hydrostatic) * r.dot(gradW) / (r.squaredNorm() + eta2) * m[j] / rho[j];
+            if (antuono) {  // psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / (r^2 + eta^2) - (<grad rho>_i + <grad rho>_j)
+                const Vec<D> psi = 2.0 * (rho[j] - rho[i]) * (-r) / (r.squaredNorm() + eta2) - (gradient[i] + gradient[j]);
+                drho += s.delta * s.h * s.c0 * psi.dot(gradW) * m[j] / rho[j];
+            } else {  // Fourtakas et al. (2019): rho^H_ji = rho0 [(1 - rho0 g.r_ij / B)^(1/gamma) - 1]
+                const double hydrostatic = s.rho0 * (std::pow(1.0 - s.rho0 * s.gravity.dot(r) / eos.B, 1.0 / s.gamma) - 1.0);
+                drho += 2.0 * s.delta * s.h * s.c0 * ((rho[i] - rho[j]) + hydrostatic) * r.dot(gradW) / (r.squaredNorm() + eta2) * m[j] / rho[j];
+            }
         }
         const auto& walls = system.walls;
         for (std::size_t w = 0; w < walls.size(); ++w) {  // pressure, viscosity and continuity; no diffusion
@@ -181,6 +203,57 @@ TEST(PairLoop, EqualsTheDirectSumBeyondFourtakasSeries) {
 TEST(PairLoop, EqualsTheDirectSumAcrossAPeriodicSide) {
     compareWithDirectSum<2>(2, Scene<2>{}.c0, true);
     compareWithDirectSum<3>(1, Scene<3>{}.c0, true);
+}
+
+TEST(PairLoop, EqualsTheDirectSumWithDeltaSphDiffusion) {
+    compareWithDirectSum<2>(1, Scene<2>{}.c0, false, true);
+    compareWithDirectSum<2>(2, Scene<2>{}.c0, true, true);
+    compareWithDirectSum<3>(2, Scene<3>{}.c0, false, true);
+}
+
+// A linear density field (a hydrostatic stratification) is not diffused by delta-SPH's term in
+// the interior nor at a free surface, where the renormalised gradient is still exact; Molteni &
+// Colagrossi's term diffuses it wherever the sums are one-sided.
+TEST(PairLoop, DeltaSphLeavesALinearDensityFieldAlone) {
+    const auto rateAtTheTop = [](const DensityDiffusion<2>& diffusion) {
+        Scene<2> s;
+        ParticleSet<2> fluid("fluid");
+        fluid.resize(static_cast<std::size_t>(s.perSide * s.perSide));
+        auto& rho = fluid.addScalar("density", s.rho0);
+        fluid.addScalar("mass", s.rho0 * s.dx * s.dx);
+        fluid.addVector("velocity", Vec<2>::Zero());
+        for (int k = 0; k < s.perSide * s.perSide; ++k) {
+            const auto i = static_cast<std::size_t>(k);
+            fluid.position[i] = Vec<2>((k % s.perSide + 0.5) * s.dx, (k / s.perSide + 0.5) * s.dx);
+            rho[i] = s.rho0 * (1.0 + 0.01 * (1.0 - fluid.position[i].y()));
+            fluid.globalId[i] = k;
+        }
+        const auto domain = test::blockDomain<2>(s.perSide * s.dx, false);
+        FluidModels<2> models{WendlandC2<2>(s.h), TaitEquationOfState(s.rho0, s.c0, s.gamma, 0.0), NoViscosity{}, diffusion,
+                              DensityFormulation::Continuity};
+        ParticleSet<2> walls("walls");
+        walls.addScalar("mass", 0.0);
+        FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, domain.min, domain.max, Vec<2>::Zero(), 0.0,
+                              domain.periodic);
+        system.evaluateRates(0.0);
+        double top = 0.0, interior = 0.0;
+        for (std::size_t i = 0; i < system.fluid.size(); ++i) {
+            const Vec<2>& x = system.fluid.position[i];
+            const double rate = std::abs(system.fluid.scalar("densityRate")[i]);
+            if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.46) top = std::max(top, rate);                  // the top row, mid-width
+            if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.2 && x.y() < 0.28) interior = std::max(interior, rate);  // full support
+        }
+        return std::pair(top, interior);
+    };
+    const Scene<2> s;
+    const auto [deltaTop, deltaInterior] = rateAtTheTop(Antuono2010(s.delta, s.h, s.c0));
+    const auto [molteniTop, molteniInterior] = rateAtTheTop(MolteniColagrossi2009(s.delta, s.h, s.c0));
+    EXPECT_GT(molteniTop, 1.0);                   // kg/m^3/s: the stratification diffuses at the surface
+    // What remains is the regularisation's: the first term carries r^2 / (r^2 + 0.01 h^2), the
+    // gradients' part does not, so a nearest pair keeps 0.01 h^2 / (dx^2 + 0.01 h^2) = 1.7 % of it.
+    EXPECT_LT(deltaTop, 0.02 * molteniTop);
+    EXPECT_LT(deltaInterior, 0.02 * molteniTop);
+    EXPECT_LT(molteniInterior, 1e-3 * molteniTop);  // a symmetric lattice cancels it inside to first order (V_j = m / rho_j varies)
 }
 
 TEST(PairLoop, FourtakasSeriesEqualsPowWhereItHolds) {
