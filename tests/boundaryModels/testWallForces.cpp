@@ -236,6 +236,10 @@ TEST(DeficiencyWeighting, HandComputedWeights) {
     EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.25, 1.0), 1.0);
     // Glancing at 90 degrees: G = 0, w = 0.25 + 0.5 * 0.5 = 0.5.
     EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<2>(0.5, Vec<2>(1, 0), Vec<2>(0, 1), 0.25, 0.25, 1.0), 0.5);
+    // A particle without area (a box's edge or corner): no weight in 3D, the paper's in 2D.
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<3>(0.5, Vec<3>(0, 0, 1), Vec<3>(0, 0, 1), 0.25, 0.0, 1.0), 0.0);
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<3>(0.5, Vec<3>(0, 0, 1), Vec<3>(0, 0, 1), 0.25, 0.0625, 1.0), 1.0);
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingJones2010::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.0, 1.0), 1.0);
     // The boundary-integral weight is the particle's area, whatever its spacing.
     EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.25, 1.0), 0.25);
     EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<3>(0.5, Vec<3>(0, 0, 1), Vec<3>(0, 0, 1), 0.25, 0.0625, 1.0), 0.0625);

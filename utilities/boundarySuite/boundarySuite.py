@@ -85,6 +85,8 @@ def prepare(case, name):
     os.makedirs(directory)
     for part in ("system", "constant"):
         shutil.copytree(os.path.join(ROOT, "cases", case, part), os.path.join(directory, part))
+    for data in glob.glob(os.path.join(ROOT, "cases", case, "*.csv")):  # reference data the case's function objects read
+        shutil.copy(data, directory)
     return directory
 
 
@@ -478,4 +480,5 @@ def main():
     print("\n".join(lines))
 
 
-main()
+if __name__ == "__main__":
+    main()
