@@ -191,12 +191,16 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     fluidSet.resize(fluidPositions.size());
     auto& velocity = fluidSet.addVector("velocity", Vec<D>::Zero());
     auto& density = fluidSet.addScalar("density", rho0);
+    // The pressure the solver will take from the density, so that the initial state can be coloured by it.
+    const auto pressureOf = [&](double rho) { return std::visit([&](const auto& eos) { return eos.pressure(rho); }, properties.eos); };
+    auto& pressure = fluidSet.addScalar("pressure", 0.0);
     fluidSet.addScalar("mass", rho0 * volume);
     for (std::size_t i = 0; i < fluidPositions.size(); ++i) {
         fluidSet.position[i] = fluidPositions[i];
         fluidSet.globalId[i] = static_cast<std::int64_t>(i);
         velocity[i] = fluidVelocities[i];
         density[i] = fluidDensity(i);
+        pressure[i] = pressureOf(density[i]);
     }
 
     walls.resize(allWalls.positions.size());
@@ -204,6 +208,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     auto& spacing = walls.addScalar("spacing", dx);
     auto& area = walls.addScalar("area", 0.0);
     auto& wallDensity = walls.addScalar("density", rho0);
+    auto& wallPressure = walls.addScalar("pressure", 0.0);
     walls.addScalar("mass", rho0 * volume);
     auto& patch = walls.addInteger("patch", 0);
     auto& layer = walls.addInteger("layer", 0);
@@ -217,6 +222,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         patch[k] = patchOf[k];
         layer[k] = allWalls.layers[k];
         wallDensity[k] = initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;
+        wallPressure[k] = pressureOf(wallDensity[k]);
     }
 
     StateHeader header;

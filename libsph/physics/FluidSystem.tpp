@@ -49,7 +49,9 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     if (continuity()) fluid.addScalar("densityRate", 0.0);
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
-    walls.addVector("velocity", Vec<D>::Zero(), false);
+    // Written where a patch moves: its velocity is then worth colouring by (and zero elsewhere).
+    wallsMove_ = std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.motion != nullptr; });
+    walls.addVector("velocity", Vec<D>::Zero(), wallsMove_);
     if (!walls.hasScalar("area") && walls.hasScalar("spacing")) {
         // A state written before walls had areas: each particle stands for spacing^(D-1).
         auto& area = walls.addScalar("area", 0.0);
@@ -72,7 +74,6 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     }
     if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0);
     if (keepsUncorrectedAcceleration_) fluid.addVector("uncorrectedAcceleration", Vec<D>::Zero());
-    for (const Patch<D>& patch : patches) wallsMove_ = wallsMove_ || patch.motion != nullptr;
     if (wallsMove_) {
         // Motions are given from the initial configuration: written with the state, so a restart keeps it.
         if (!walls.hasVector("initialPosition")) walls.addVector("initialPosition", Vec<D>::Zero()) = walls.position;
