@@ -15,7 +15,7 @@ namespace sph {
 template <int D>
 WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : points_(dict.getVectorList<D>("points")),
-      window_(dict.found("timeWindow") ? dict.getPositiveOrDefault("timeWindow", 0.0) : 0.0),
+      window_(dict.getPositiveOrDefault("timeWindow", 0.0)),
       patchName_(dict.get<std::string>("patch")) {
     const FluidSystem<D>& system = context.system;
     if (points_.empty()) dict.fail("points", "lists no sensor");
@@ -39,7 +39,7 @@ WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const Functi
             if (walls.hasScalar("spacing")) spacing = std::max(spacing, walls.scalar("spacing")[j]);
         }
     if (surface.empty()) dict.fail("patch", fmt::format("patch '{}' has no wall particles", patchName_));
-    size_ = dict.found("size") ? dict.getPositiveOrDefault("size", spacing) : spacing;
+    size_ = dict.getPositiveOrDefault("size", spacing);
     for (std::size_t k = 0; k < points_.size(); ++k) {
         std::vector<std::size_t> members;
         std::size_t nearest = surface.front();

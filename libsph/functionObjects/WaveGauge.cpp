@@ -40,7 +40,7 @@ WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& 
         dict.fail("threshold", fmt::format("{:g} is not a volume fraction between 0 and 1 (exclusive); 0.5 reads a flat surface", threshold_));
     for (const Vec<D>& point : points_) {
         const double reach = distanceToBoundary(point, up_, system.domainMin(), system.domainMax());
-        lengths_.push_back(dict.found("length") ? dict.getPositiveOrDefault("length", reach) : reach);
+        lengths_.push_back(dict.getPositiveOrDefault("length", reach));
     }
     if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, system).motion.get();
     const auto& m = system.fluid.scalar("mass");
