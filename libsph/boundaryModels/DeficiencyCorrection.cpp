@@ -128,44 +128,7 @@ void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, st
 template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin,
                                                        std::size_t end, double t) {
-    // The case's options as template parameters: the pair loop has no branch on them.
-    const auto select = [](bool option, auto&& next) { option ? next(std::true_type{}) : next(std::false_type{}); };
-    select(radialDirection_, [&](auto radial) {
-        select(calibration_ == DeficiencyCalibration::WallPressure, [&](auto wallPressure) {
-            select(!repulsion_, [&](auto distancePartner) {
-                correct<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(system, patchCells, begin, end, t);
-            });
-        });
-    });
-    if (repulsion_) addRepulsion(system, patchCells, *repulsion_);
-}
-
-template <int D, class Weighting>
-template <bool Radial, bool WallPressure, bool DistancePartner>
-void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end,
-                                                 double t) {
-    // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
-    constexpr bool separateAreaIntegral = Weighting::normalised || Radial;
     const std::size_t n = system.fluid.ownedCount();
-    const Vec<D>* x = system.fluid.position.data();
-    const Vec<D>* v = system.fluid.vector("velocity").data();
-    const double* p = system.fluid.scalar("pressure").data();
-    const double* rho = system.fluid.scalar("density").data();
-    double* densityRate = system.continuity() ? system.fluid.scalar("densityRate").data() : nullptr;
-    const bool literal = calibration_ == DeficiencyCalibration::Literal;
-    const Vec<D>* uncorrected = WallPressure ? nullptr : system.fluid.vector("uncorrectedAcceleration").data();
-    Vec<D>* a = system.fluid.vector("acceleration").data();
-    Vec<D>* correction = system.fluid.vector("boundaryCorrection").data();
-    const Vec<D>* xWall = system.walls.position.data();
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const Vec<D>* aWall = system.walls.vector("acceleration").data();
-    const double* spacing = system.walls.scalar("spacing").data();
-    const double* area = system.walls.scalar("area").data();
-    double* C = system.walls.scalar("correctionCoefficient").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    double* rhoWall = system.walls.scalar("density").data();
-    const double radius = system.supportRadius();
     const Vec<D> gravity = system.gravityAt(t);
     const double lambda = repeatWrittenCoefficients_ ? 0.0 : firstEvaluation_ ? 1.0 : smoothing_;
     firstEvaluation_ = repeatWrittenCoefficients_ = false;
@@ -173,124 +136,184 @@ void DeficiencyCorrection<D, Weighting>::correct(FluidSystem<D>& system, const C
     pairRanges_.resize(n);
     pairsPerThread_.resize(static_cast<std::size_t>(omp_get_max_threads()));
     blend_.assign(n, Vec<D>::Zero());
-    if (separateAreaIntegral) areaIntegral_.assign(n, Vec<D>::Zero());
+    if (Weighting::normalised || radialDirection_) areaIntegral_.assign(n, Vec<D>::Zero());
     push_.assign(end, 0.0);  // indexed by wall particle; [0, begin) unused
     virtualDensity_.assign(end, 0.0);
-    const auto directionOf = [&](std::uint32_t j, const Vec<D>& r, double distance) -> Vec<D> {
-        if constexpr (Radial) return r / distance;
-        else return normal[j];
-    };
+    // The case's options as template parameters: the pair loops have no branch on them. Each
+    // pass is compiled over what it reads only (the kernel for the first two), which keeps the
+    // instantiations few.
+    const auto select = [](bool option, auto&& next) { option ? next(std::true_type{}) : next(std::false_type{}); };
+    const bool wallPressureCalibration = calibration_ == DeficiencyCalibration::WallPressure;
+    select(radialDirection_, [&](auto radial) {
+        std::visit([&](const auto& kernel) { weighPairs<decltype(radial)::value>(system, patchCells, kernel); }, system.models().kernel);
+    });
+    select(wallPressureCalibration, [&](auto wallPressure) {
+        std::visit([&](const auto& kernel) { setWallParticles<decltype(wallPressure)::value>(system, begin, end, gravity, lambda, kernel); },
+                   system.models().kernel);
+    });
+    select(radialDirection_, [&](auto radial) {
+        select(wallPressureCalibration, [&](auto wallPressure) {
+            select(!repulsion_, [&](auto distancePartner) {
+                applyCorrection<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(system, gravity);
+            });
+        });
+    });
+    if (repulsion_) addRepulsion(system, patchCells, *repulsion_);
+}
 
-    std::visit(
-        [&](const auto& kernel, const auto& eos) {
-            // Pass 1: each fluid particle's weights, blend c_i and area integral g_i; the pairs
-            // are kept (in this thread's list) for pass 3, so the search and weights run once.
+template <int D, class Weighting>
+template <bool Radial, class Kernel>
+void DeficiencyCorrection<D, Weighting>::weighPairs(const FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const Kernel& kernel) {
+    // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
+    constexpr bool separateAreaIntegral = Weighting::normalised || Radial;
+    const std::size_t n = system.fluid.ownedCount();
+    const Vec<D>* x = system.fluid.position.data();
+    const Vec<D>* normal = system.walls.vector("normal").data();
+    const double* spacing = system.walls.scalar("spacing").data();
+    const double* area = system.walls.scalar("area").data();
+    const double radius = system.supportRadius();
+    // Each fluid particle's weights, blend c_i and area integral g_i; the pairs are kept (in
+    // this thread's list) for the correction, so the search and weights run once.
 #pragma omp parallel
-            {
-                auto& pairs = pairsPerThread_[static_cast<std::size_t>(omp_get_thread_num())];
-                pairs.clear();
+    {
+        auto& pairs = pairsPerThread_[static_cast<std::size_t>(omp_get_thread_num())];
+        pairs.clear();
 #pragma omp for schedule(static)
-                for (std::size_t i = 0; i < n; ++i) {
-                    double sum = 0.0;
-                    Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
-                    const auto first = static_cast<std::uint32_t>(pairs.size());
-                    patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
-                        const double distance = std::sqrt(r2);
-                        if (distance == 0.0) return;
-                        const double W = kernel.value(distance);
-                        const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
-                        sum += w;
-                        blend += (W * w) * directionOf(j, r, distance);
-                        if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
-                        pairs.push_back({j, W, W * w, distance, r});
-                    });
-                    pairRanges_[i] = {static_cast<std::uint32_t>(omp_get_thread_num()), first, static_cast<std::uint32_t>(pairs.size())};
-                    weightSum_[i] = sum;
-                    blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
-                    if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
-                }
-            }
-            const Vec<D>* areaIntegral = separateAreaIntegral ? areaIntegral_.data() : blend_.data();
-            // Pass 2: each wall particle's pressure, density, scale R_j and push.
-            const auto& fluidCells = system.fluidCells();
+        for (std::size_t i = 0; i < n; ++i) {
+            double sum = 0.0;
+            Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
+            const auto first = static_cast<std::uint32_t>(pairs.size());
+            patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                const double distance = std::sqrt(r2);
+                if (distance == 0.0) return;
+                const double W = kernel.value(distance);
+                const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
+                sum += w;
+                blend += (W * w) * direction<Radial>(normal[j], r, distance);
+                if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
+                pairs.push_back({j, W, W * w, distance, r});
+            });
+            pairRanges_[i] = {static_cast<std::uint32_t>(omp_get_thread_num()), first, static_cast<std::uint32_t>(pairs.size())};
+            weightSum_[i] = sum;
+            blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
+            if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
+        }
+    }
+}
+
+template <int D, class Weighting>
+template <bool WallPressure, class Kernel>
+void DeficiencyCorrection<D, Weighting>::setWallParticles(FluidSystem<D>& system, std::size_t begin, std::size_t end, const Vec<D>& gravity,
+                                                          double lambda, const Kernel& kernel) {
+    // The equation of state is read once per wall particle, not per pair: visited there.
+    const EquationOfState& eos = system.models().eos;
+    const double p0 = std::visit([](const auto& e) { return e.p0; }, eos);
+    const double* p = system.fluid.scalar("pressure").data();
+    const double* rho = system.fluid.scalar("density").data();
+    const Vec<D>* uncorrected = WallPressure ? nullptr : system.fluid.vector("uncorrectedAcceleration").data();
+    const Vec<D>* xWall = system.walls.position.data();
+    const Vec<D>* normal = system.walls.vector("normal").data();
+    const Vec<D>* aWall = system.walls.vector("acceleration").data();
+    double* C = system.walls.scalar("correctionCoefficient").data();
+    double* pWall = system.walls.scalar("pressure").data();
+    double* rhoWall = system.walls.scalar("density").data();
+    const double radius = system.supportRadius();
+    const bool literal = calibration_ == DeficiencyCalibration::Literal;
+    const Vec<D>* areaIntegral = (Weighting::normalised || radialDirection_) ? areaIntegral_.data() : blend_.data();
+    const auto& fluidCells = system.fluidCells();
+    // Each wall particle's pressure, density, scale R_j and push.
 #pragma omp parallel
-            {
-                std::vector<std::pair<double, std::uint32_t>> sample;  // one per thread, reused
+    {
+        std::vector<std::pair<double, std::uint32_t>> sample;  // one per thread, reused
 #pragma omp for schedule(static)
-                for (std::size_t j = begin; j < end; ++j) {
-                    WallPressureExtrapolation<D> extrapolation;
-                    double scaleNumerator = 0.0, scaleDenominator = 0.0;
-                    fluidCells.forEachNeighbour(xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
-                        const double W = kernel.value(std::sqrt(r2));
-                        extrapolation.add(W, p[s], rho[s], r);
-                        scaleNumerator += W * areaIntegral[s].dot(normal[j]);
-                        scaleDenominator += W * blend_[s].dot(normal[j]);
-                    });
-                    const double pj = extrapolation.weight > 0.0 ? std::max(extrapolation.pressure(gravity - aWall[j]), eos.p0) : eos.p0;
-                    const double rhoj = eos.density(pj);
-                    const double scale = scaleDenominator > 0.0 ? scaleNumerator / scaleDenominator : 0.0;
-                    const double uniformCoefficient = -2.0 * pj * scale / rhoj;
-                    pWall[j] = pj;
-                    rhoWall[j] = rhoj;
-                    virtualDensity_[j] = rhoj * scale;
-                    if constexpr (WallPressure) {
-                        push_[j] = pj * scale / rhoj;
-                        C[j] = uniformCoefficient;
-                        continue;
-                    }
-                    sample.clear();
-                    fluidCells.forEachNeighbour(xWall[j], sampleRadius_, [&](std::uint32_t s, const Vec<D>&, double r2) { sample.emplace_back(r2, s); });
-                    if (sampleSize_ > 0) keepNearest(sample, sampleSize_);
-                    double numerator = 0.0, denominator = 0.0;
-                    for (const auto& [r2, s] : sample) {
-                        numerator += (uncorrected[s] - aWall[j]).dot(normal[j]);
-                        denominator += literal ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
-                    }
-                    // Never attracting, never more than twice the virtual particles' push.
-                    const double fresh =
-                        denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
-                    C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
-                    push_[j] = -C[j];
-                }
+        for (std::size_t j = begin; j < end; ++j) {
+            WallPressureExtrapolation<D> extrapolation;
+            double scaleNumerator = 0.0, scaleDenominator = 0.0;
+            fluidCells.forEachNeighbour(xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
+                const double W = kernel.value(std::sqrt(r2));
+                extrapolation.add(W, p[s], rho[s], r);
+                scaleNumerator += W * areaIntegral[s].dot(normal[j]);
+                scaleDenominator += W * blend_[s].dot(normal[j]);
+            });
+            const double pj = extrapolation.weight > 0.0 ? std::max(extrapolation.pressure(gravity - aWall[j]), p0) : p0;
+            const double rhoj = std::visit([pj](const auto& e) { return e.density(pj); }, eos);
+            const double scale = scaleDenominator > 0.0 ? scaleNumerator / scaleDenominator : 0.0;
+            const double uniformCoefficient = -2.0 * pj * scale / rhoj;
+            pWall[j] = pj;
+            rhoWall[j] = rhoj;
+            virtualDensity_[j] = rhoj * scale;
+            if constexpr (WallPressure) {
+                push_[j] = pj * scale / rhoj;
+                C[j] = uniformCoefficient;
+                continue;
             }
-            // Pass 3: the blended correction, the virtual particles' compression, the distance partner.
-            const double* push = push_.data();
-            const double* virtualDensity = virtualDensity_.data();
+            sample.clear();
+            fluidCells.forEachNeighbour(xWall[j], sampleRadius_, [&](std::uint32_t s, const Vec<D>&, double r2) { sample.emplace_back(r2, s); });
+            if (sampleSize_ > 0) keepNearest(sample, sampleSize_);
+            double numerator = 0.0, denominator = 0.0;
+            for (const auto& [r2, s] : sample) {
+                numerator += (uncorrected[s] - aWall[j]).dot(normal[j]);
+                denominator += literal ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
+            }
+            // Never attracting, never more than twice the virtual particles' push.
+            const double fresh =
+                denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
+            C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
+            push_[j] = -C[j];
+        }
+    }
+}
+
+template <int D, class Weighting>
+template <bool Radial, bool WallPressure, bool DistancePartner>
+void DeficiencyCorrection<D, Weighting>::applyCorrection(FluidSystem<D>& system, const Vec<D>& gravity) {
+    const std::size_t n = system.fluid.ownedCount();
+    const Vec<D>* v = system.fluid.vector("velocity").data();
+    const double* p = system.fluid.scalar("pressure").data();
+    const double* rho = system.fluid.scalar("density").data();
+    double* densityRate = system.continuity() ? system.fluid.scalar("densityRate").data() : nullptr;
+    Vec<D>* a = system.fluid.vector("acceleration").data();
+    Vec<D>* correction = system.fluid.vector("boundaryCorrection").data();
+    const Vec<D>* vWall = system.walls.vector("velocity").data();
+    const Vec<D>* normal = system.walls.vector("normal").data();
+    const Vec<D>* aWall = system.walls.vector("acceleration").data();
+    const double* area = system.walls.scalar("area").data();
+    const double* push = push_.data();
+    const double* virtualDensity = virtualDensity_.data();
+    // The blended correction, the virtual particles' compression, the distance partner.
 #pragma omp parallel for schedule(static)
-            for (std::size_t i = 0; i < n; ++i) {
-                if (!(weightSum_[i] > 0.0)) continue;
-                const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
-                const double ownPressureTerm = p[i] / (rho[i] * rho[i]);
-                Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
-                double rate = 0.0, areaWeight = 0.0;
-                const PairRange range = pairRanges_[i];
-                const WallPair* pairs = pairsPerThread_[range.thread].data();
-                for (std::uint32_t k = range.begin; k < range.end; ++k) {
-                    const auto& [j, W, blendWeight, distance, r] = pairs[k];
-                    const double shape = blendWeight * inverseSum;
-                    const Vec<D> d = directionOf(j, r, distance);
-                    if constexpr (WallPressure) {
-                        sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
-                        rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
-                        sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
-                    } else {
-                        sum += (shape * push[j]) * d;
-                    }
-                    if constexpr (DistancePartner) {
-                        areaWeight += W * area[j];
-                        penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -(v[i] - vWall[j]).dot(normal[j]))) * normal[j];
-                    }
-                }
-                if constexpr (DistancePartner)
-                    a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
-                else
-                    a[i] += sum;
-                correction[i] += sum;
-                if constexpr (WallPressure)
-                    if (densityRate) densityRate[i] += rate;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(weightSum_[i] > 0.0)) continue;
+        const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
+        const double ownPressureTerm = p[i] / (rho[i] * rho[i]);
+        Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
+        double rate = 0.0, areaWeight = 0.0;
+        const PairRange range = pairRanges_[i];
+        const WallPair* pairs = pairsPerThread_[range.thread].data();
+        for (std::uint32_t k = range.begin; k < range.end; ++k) {
+            const auto& [j, W, blendWeight, distance, r] = pairs[k];
+            const double shape = blendWeight * inverseSum;
+            const Vec<D> d = direction<Radial>(normal[j], r, distance);
+            if constexpr (WallPressure) {
+                sum += (shape * (ownPressureTerm * virtualDensity[j] + push[j])) * d;
+                rate -= shape * virtualDensity[j] * (v[i] - vWall[j]).dot(d);
+                sum -= outsideFraction_.element(distance, r.dot(normal[j]), area[j]) * (gravity - aWall[j]);
+            } else {
+                sum += (shape * push[j]) * d;
             }
-        },
-        system.models().kernel, system.models().eos);
+            if constexpr (DistancePartner) {
+                areaWeight += W * area[j];
+                penalty += (W * area[j] * penalty_.term(r.dot(normal[j]), -(v[i] - vWall[j]).dot(normal[j]))) * normal[j];
+            }
+        }
+        if constexpr (DistancePartner)
+            a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
+        else
+            a[i] += sum;
+        correction[i] += sum;
+        if constexpr (WallPressure)
+            if (densityRate) densityRate[i] += rate;
+    }
 }
 
 template class DeficiencyCorrection<1, DeficiencyWeightingJones2010>;

@@ -82,8 +82,20 @@ public:
     void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t) override;
 
 private:
+    // The three passes of an evaluation: the fluid particles' weights and blends, the wall
+    // particles' pressures and pushes, the correction applied to the fluid.
+    template <bool Radial, class Kernel>
+    void weighPairs(const FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const Kernel& kernel);
+    template <bool WallPressure, class Kernel>
+    void setWallParticles(FluidSystem<D>& system, std::size_t begin, std::size_t end, const Vec<D>& gravity, double lambda, const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner>
-    void correct(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t);
+    void applyCorrection(FluidSystem<D>& system, const Vec<D>& gravity);
+    // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.
+    template <bool Radial>
+    static Vec<D> direction(const Vec<D>& normal, const Vec<D>& r, double distance) {
+        if constexpr (Radial) return r / distance;
+        else return normal;
+    }
 
     std::string typeName_;
     WallDistancePenalty penalty_;            // the partner unless a discrete law is named
