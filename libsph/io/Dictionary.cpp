@@ -1,8 +1,11 @@
 #include "io/Dictionary.hpp"
 
+#include "io/DictionaryExpression.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -181,8 +184,10 @@ public:
                 parseInclude(target);
                 continue;
             }
+            if (token.kind == Token::Kind::Word && token.text == "#eval")
+                throw FatalError(token.where, "#eval gives a value and stands after a keyword, as in: length #eval \"2 * $H\";");
             if (token.kind == Token::Kind::Word && token.text.starts_with("#"))
-                throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include)");
+                throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include, and #eval in a value)");
             if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
                 // `$dict` inside a dictionary merges that dictionary's entries here. A copy of the
                 // entry keeps its dictionary alive while the merge replaces entries of the same
@@ -224,6 +229,53 @@ private:
         Parser inner(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, nesting_, scopes_, tokenCount_);
         inner.scopes_.pop_back();  // the included text parses straight into `target`
         inner.parseBody(target, true);
+    }
+
+    // #eval "expression": the macros in it replaced by their numbers, then evaluated.
+    Token evaluate() {
+        const Token& directive = tokens_[pos_++];
+        if (pos_ >= tokens_.size() || tokens_[pos_].kind != Token::Kind::String)
+            throw FatalError(directive.where, "#eval must be followed by an expression in double quotes, as in: length #eval \"2 * $H\";");
+        const Token& expression = tokens_[pos_++];
+        Token result;
+        result.kind = Token::Kind::Number;
+        result.where = expression.where;
+        result.number = evaluateDictionaryExpression(expandNumberMacros(expression), expression.where);
+        char digits[32];
+        const auto written = std::to_chars(digits, digits + sizeof digits, result.number);  // shortest text that reads back exactly
+        result.text.assign(digits, written.ptr);
+        return result;
+    }
+
+    // The expression's text with each $name or ${path/name} replaced by the number it names,
+    // in parentheses (so that a negative one keeps its sign under ^).
+    std::string expandNumberMacros(const Token& expression) const {
+        const std::string& text = expression.text;
+        std::string expanded;
+        for (std::size_t i = 0; i < text.size();) {
+            if (text[i] != '$') {
+                expanded += text[i++];
+                continue;
+            }
+            const std::size_t start = i++;
+            if (i < text.size() && text[i] == '{') {
+                const std::size_t close = text.find('}', i);
+                if (close == std::string::npos) throw FatalError(expression.where, "#eval \"" + text + "\": '${' is never closed by '}'");
+                i = close + 1;
+            } else {
+                while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) ++i;
+            }
+            Token macro = expression;
+            macro.text = text.substr(start, i - start);
+            const Entry& source = resolveMacro(macro);
+            if (source.isDictionary() || source.tokens().size() != 1 || source.tokens().front().kind != Token::Kind::Number)
+                throw FatalError(expression.where, "#eval \"" + text + "\": macro '" + macro.text + "' must name one number; it names " +
+                                                       (source.isDictionary() ? std::string("a dictionary")
+                                                        : source.tokens().size() != 1 ? std::to_string(source.tokens().size()) + " tokens"
+                                                                                      : source.tokens().front().describe()));
+            expanded += "(" + source.tokens().front().text + ")";
+        }
+        return expanded;
     }
 
     const Entry& resolveMacro(const Token& token) const {
@@ -308,6 +360,10 @@ private:
                 }
                 count(source.tokens().size(), token.where);
                 value.insert(value.end(), source.tokens().begin(), source.tokens().end());
+                continue;
+            }
+            if (token.kind == Token::Kind::Word && token.text == "#eval") {
+                value.push_back(evaluate());
                 continue;
             }
             value.push_back(token);

@@ -82,7 +82,7 @@ TEST(Dictionary, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(errorOf([] { parse("a 1; /* open"); }), "testDict:1:6: error: comment '/*' is never closed by '*/'");
     EXPECT_EQ(errorOf([] { parse("s \"open\n;"); }), "testDict:1:3: error: string is not closed by '\"' on the same line");
     EXPECT_EQ(errorOf([] { parse("3 4;"); }), "testDict:1:1: error: expected a keyword, found number 3");
-    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include)");
+    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include, and #eval in a value)");
     EXPECT_EQ(errorOf([] { parse("a $missing;"); }),
               "testDict:1:3: error: macro '$missing' refers to no entry defined before it in this or an enclosing dictionary");
     EXPECT_EQ(errorOf([] { parse("a ;"); }), "testDict:1:1: error: entry 'a' has no value before ';'");
@@ -207,4 +207,44 @@ TEST(Dictionary, MacroThatReplacesItsOwnSourceWhileMerging) {
     const Dictionary d = parse("d { type { type 1; other 2; } $type }");
     EXPECT_DOUBLE_EQ(d.subDict("d").get<double>("type"), 1.0);
     EXPECT_DOUBLE_EQ(d.subDict("d").get<double>("other"), 2.0);
+}
+
+TEST(Dictionary, EvalComputesArithmeticOverMacros) {
+    const Dictionary d = parse("H 0.6; dx 0.02; sub { n 3; }\n"
+                               "length #eval \"5.366 * $H\";\n"
+                               "box (0 #eval \"${H} / 2 + ${sub/n}\" 1);\n"
+                               "r0 #eval \"$dx/2\"; c0 #eval \"10 * sqrt(9.81 * $H)\";\n"
+                               "phase #eval \"pi / 2\"; square #eval \"(-$dx)^2\"; wet #eval \"$H > 0.5 ? 1 : 0\";\n"
+                               "twice #eval \"2 * $length\";");
+    EXPECT_DOUBLE_EQ(d.get<double>("length"), 5.366 * 0.6);
+    EXPECT_EQ(d.get<std::vector<double>>("box"), (std::vector<double>{0, 0.6 / 2 + 3, 1}));
+    EXPECT_DOUBLE_EQ(d.get<double>("r0"), 0.01);
+    EXPECT_DOUBLE_EQ(d.get<double>("c0"), 10 * std::sqrt(9.81 * 0.6));
+    EXPECT_DOUBLE_EQ(d.get<double>("phase"), M_PI / 2);
+    EXPECT_DOUBLE_EQ(d.get<double>("square"), 0.0004);  // the macro's sign kept: (-(0.02))^2
+    EXPECT_DOUBLE_EQ(d.get<double>("wet"), 1.0);
+    EXPECT_EQ(d.get<double>("twice"), 2 * (5.366 * 0.6));  // an evaluated number reads back exactly
+}
+
+TEST(Dictionary, EvalErrorsNameTheExpressionAndWhatIsWrong) {
+    EXPECT_EQ(errorOf([] { parse("a #eval \"2 *\";"); }),
+              "testDict:1:9: error: #eval \"2 *\": Unexpected end of expression at position 4");
+    EXPECT_EQ(errorOf([] { parse("a #eval 2;"); }),
+              "testDict:1:3: error: #eval must be followed by an expression in double quotes, as in: length #eval \"2 * $H\";");
+    EXPECT_EQ(errorOf([] { parse("#eval \"1\";"); }),
+              "testDict:1:1: error: #eval gives a value and stands after a keyword, as in: length #eval \"2 * $H\";");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"$H + 1\";"); }),
+              "testDict:1:9: error: macro '$H' refers to no entry defined before it in this or an enclosing dictionary");
+    EXPECT_EQ(errorOf([] { parse("v (1 2); a #eval \"$v + 1\";"); }),
+              "testDict:1:18: error: #eval \"$v + 1\": macro '$v' must name one number; it names 4 tokens");
+    EXPECT_EQ(errorOf([] { parse("w abc; a #eval \"$w\";"); }), "testDict:1:16: error: #eval \"$w\": macro '$w' must name one number; it names word 'abc'");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"1 / 0\";"); }), "testDict:1:9: error: #eval \"1 / 0\" is infinite (a division by zero?)");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"sqrt(-1)\";"); }),
+              "testDict:1:9: error: #eval \"sqrt(-1)\" is not a number (a square root or logarithm of a negative?)");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"1, 2\";"); }), "testDict:1:9: error: #eval \"1, 2\": 2 comma-separated values; #eval gives one number");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"${H\";"); }), "testDict:1:9: error: #eval \"${H\": '${' is never closed by '}'");
+    // muParser takes up to 20000 characters; the message shows a long expression by its start.
+    EXPECT_EQ(errorOf([] { parse("a #eval \"" + std::string(10001, '(') + "1" + std::string(10001, ')') + "\";"); }),
+              "testDict:1:9: error: #eval \"" + std::string(60, '(') + "...\": Expression too long.");
+    EXPECT_DOUBLE_EQ(parse("a #eval \"" + std::string(2000, '(') + "1" + std::string(2000, ')') + "\";").get<double>("a"), 1.0);
 }

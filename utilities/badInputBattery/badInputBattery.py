@@ -67,7 +67,14 @@ add("syntax", "a string not closed", [edit(CONTROL, "application     wcsph;", "a
 add("syntax", "a `/*` comment not closed", [append(SCHEMES, "/* a note\n")], "comment '/*' is never closed by '*/'")
 add("syntax", "a `)` with no `(`", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81));")], "')' has no matching '('")
 add("syntax", "a list not closed", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81;")], "inside the list opened at line")
-add("syntax", "unknown directive `#includ`", [append(SCHEMES, "#includ \"other\"\n")], "unknown directive '#includ' (valid: #include)")
+add("syntax", "unknown directive `#includ`", [append(SCHEMES, "#includ \"other\"\n")],
+    "unknown directive '#includ' (valid: #include, and #eval in a value)")
+add("syntax", "`#eval` of a malformed expression", [edit(FLUID, "rho0        1000;", "rho0        #eval \"1000 *\";")],
+    "#eval \"1000 *\": Unexpected end of expression")
+add("syntax", "`#eval` dividing by zero", [edit(FLUID, "rho0        1000;", "rho0        #eval \"1000 / 0\";")],
+    "#eval \"1000 / 0\" is infinite (a division by zero?)")
+add("syntax", "`#eval` over a macro naming a list", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81);\ng2 #eval \"2 * $gravity\";")],
+    "macro '$gravity' must name one number; it names 4 tokens")
 add("syntax", "`#include` of a missing file", [append(SCHEMES, "#include \"missing\"\n")], "#include \"missing\": error: cannot open dictionary")
 add("syntax", "`#include \"/dev/zero\"`", [append(SCHEMES, "#include \"/dev/zero\"\n")], "'/dev/zero': not a regular file")
 add("syntax", "an `#include` that includes itself", [append(SCHEMES, "#include \"sphSchemes\"\n")], "#include nested more than 32 deep (an include cycle?)")
