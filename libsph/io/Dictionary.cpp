@@ -162,6 +162,7 @@ public:
 
     // Parses entries into `target` until end of input (topLevel) or a closing '}'.
     void parseBody(Dictionary& target, bool topLevel) {
+        const std::size_t enclosingScopes = scopes_.size();  // parameter files opened here end with this body
         scopes_.push_back(&target);
         while (pos_ < tokens_.size()) {
             const Token& token = tokens_[pos_];
@@ -169,7 +170,7 @@ public:
                 if (token.text == "}") {
                     if (topLevel) throw FatalError(token.where, "'}' has no matching '{'");
                     ++pos_;
-                    scopes_.pop_back();
+                    scopes_.resize(enclosingScopes);
                     return;
                 }
                 if (token.text == ";") {  // stray ';' is harmless, as in OpenFOAM
@@ -184,10 +185,14 @@ public:
                 parseInclude(target);
                 continue;
             }
+            if (token.kind == Token::Kind::Word && token.text == "#includeParameters") {
+                parseParameters();
+                continue;
+            }
             if (token.kind == Token::Kind::Word && token.text == "#eval")
                 throw FatalError(token.where, "#eval gives a value and stands after a keyword, as in: length #eval \"2 * $H\";");
             if (token.kind == Token::Kind::Word && token.text.starts_with("#"))
-                throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include, and #eval in a value)");
+                throw FatalError(token.where, "unknown directive '" + token.text + "' (valid: #include, #includeParameters, and #eval in a value)");
             if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
                 // `$dict` inside a dictionary merges that dictionary's entries here. A copy of the
                 // entry keeps its dictionary alive while the merge replaces entries of the same
@@ -206,29 +211,45 @@ public:
         if (!topLevel) {
             throw FatalError(target.where(), "dictionary '" + target.name() + "' opened by '{' is never closed by '}'");
         }
-        scopes_.pop_back();
+        scopes_.resize(enclosingScopes);
     }
 
 private:
     void parseInclude(Dictionary& target) {
+        auto [inner, file] = openIncluded();
+        inner.scopes_.pop_back();  // the included text parses straight into `target`
+        inner.parseBody(target, true);
+    }
+
+    // #includeParameters "file": the file's entries serve the macros and #eval of the rest of
+    // this dictionary (and those nested in it) but are not its entries, so a dictionary that
+    // does not use them all is no error: one parameter file for every dictionary of a case.
+    void parseParameters() {
+        auto [inner, file] = openIncluded();
+        auto parameters = std::make_shared<Dictionary>(file.filename().string(), SourceLocation{std::make_shared<const std::string>(file.string()), 0, 0});
+        inner.parseBody(*parameters, true);
+        parameterFiles_.push_back(parameters);
+        scopes_.insert(scopes_.end() - 1, parameters.get());  // below the dictionary's own entries, which come first
+    }
+
+    // The parser of the file an #include or #includeParameters names, and its path.
+    std::pair<Parser, std::filesystem::path> openIncluded() {
         const Token& directive = tokens_[pos_++];
         if (pos_ >= tokens_.size() || tokens_[pos_].kind != Token::Kind::String)
-            throw FatalError(directive.where, "#include must be followed by a file name in double quotes");
+            throw FatalError(directive.where, directive.text + " must be followed by a file name in double quotes");
         const Token& fileToken = tokens_[pos_++];
         if (depth_ >= maxIncludeDepth)
-            throw FatalError(fileToken.where, "#include nested more than " + std::to_string(maxIncludeDepth) + " deep (an include cycle?)");
+            throw FatalError(fileToken.where, directive.text + " nested more than " + std::to_string(maxIncludeDepth) + " deep (an include cycle?)");
         std::filesystem::path file = fileToken.text;
         if (file.is_relative()) file = base_ / file;
         std::string text;
         try {
             text = readFile(file);
         } catch (const FatalError& e) {
-            throw FatalError(fileToken.where, std::string("#include \"") + fileToken.text + "\": " + e.what());
+            throw FatalError(fileToken.where, directive.text + " \"" + fileToken.text + "\": " + e.what());
         }
         auto fileName = std::make_shared<const std::string>(file.lexically_normal().string());
-        Parser inner(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, nesting_, scopes_, tokenCount_);
-        inner.scopes_.pop_back();  // the included text parses straight into `target`
-        inner.parseBody(target, true);
+        return {Parser(Tokenizer(text, fileName).run(), file.parent_path(), depth_ + 1, nesting_, scopes_, tokenCount_), file.lexically_normal()};
     }
 
     // #eval "expression": the macros in it replaced by their numbers, then evaluated.
@@ -386,6 +407,7 @@ private:
     int depth_;
     int nesting_;
     std::vector<const Dictionary*> scopes_;
+    std::vector<std::shared_ptr<const Dictionary>> parameterFiles_;  // alive while their scopes are
     std::size_t& tokenCount_;
 };
 

@@ -82,7 +82,7 @@ TEST(Dictionary, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(errorOf([] { parse("a 1; /* open"); }), "testDict:1:6: error: comment '/*' is never closed by '*/'");
     EXPECT_EQ(errorOf([] { parse("s \"open\n;"); }), "testDict:1:3: error: string is not closed by '\"' on the same line");
     EXPECT_EQ(errorOf([] { parse("3 4;"); }), "testDict:1:1: error: expected a keyword, found number 3");
-    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include, and #eval in a value)");
+    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include, #includeParameters, and #eval in a value)");
     EXPECT_EQ(errorOf([] { parse("a $missing;"); }),
               "testDict:1:3: error: macro '$missing' refers to no entry defined before it in this or an enclosing dictionary");
     EXPECT_EQ(errorOf([] { parse("a ;"); }), "testDict:1:1: error: entry 'a' has no value before ';'");
@@ -139,6 +139,30 @@ TEST(Dictionary, MissingKeywordNamesTheDictionary) {
     const Dictionary d = parse("kernel\n{\n    hdx 1.3;\n}");
     EXPECT_EQ(errorOf([&] { d.subDict("kernel").get<std::string>("type"); }),
               "testDict:2:1: error: keyword 'type' is missing from dictionary 'testDict/kernel'");
+}
+
+TEST(Dictionary, ParameterFilesServeMacrosWithoutBecomingEntries) {
+    // One parameter file for every dictionary of a case: what a dictionary does not use is no error.
+    const auto dir = sph::test::freshDirectory();
+    sph::test::writeFile(dir / "caseParameters", "H 0.6; dx #eval \"$H / 40\"; unusedHere 7;");
+    sph::test::writeFile(dir / "system" / "dict", "#includeParameters \"../caseParameters\"\n"
+                                                  "depth $H; spacing $dx; length #eval \"5.366 * $H\";\n"
+                                                  "H 0.5; own $H; sub { inner $dx; }\n");
+    const Dictionary d = Dictionary::fromFile(dir / "system" / "dict");
+    EXPECT_DOUBLE_EQ(d.get<double>("depth"), 0.6);
+    EXPECT_DOUBLE_EQ(d.get<double>("spacing"), 0.015);
+    EXPECT_DOUBLE_EQ(d.get<double>("length"), 5.366 * 0.6);
+    EXPECT_DOUBLE_EQ(d.get<double>("own"), 0.5);  // the dictionary's own entry before the parameter
+    EXPECT_DOUBLE_EQ(d.subDict("sub").get<double>("inner"), 0.015);
+    d.get<double>("H");
+    EXPECT_FALSE(d.found("unusedHere"));
+    EXPECT_EQ(errorOf([&] { d.checkUnused(); }), "");
+    // Opened inside a sub-dictionary, the parameters end with it.
+    sph::test::writeFile(dir / "scoped", "sub { #includeParameters \"caseParameters\" a $H; }\nb $H;\n");
+    EXPECT_EQ(errorOf([&] { Dictionary::fromFile(dir / "scoped"); }),
+              (dir / "scoped").string() + ":2:3: error: macro '$H' refers to no entry defined before it in this or an enclosing dictionary");
+    EXPECT_EQ(errorOf([] { parse("#includeParameters \"nowhere\""); }).substr(0, 70),
+              "testDict:1:20: error: #includeParameters \"nowhere\": error: cannot open");
 }
 
 TEST(Dictionary, UnusedKeywordsAreReported) {

@@ -68,7 +68,7 @@ add("syntax", "a `/*` comment not closed", [append(SCHEMES, "/* a note\n")], "co
 add("syntax", "a `)` with no `(`", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81));")], "')' has no matching '('")
 add("syntax", "a list not closed", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81;")], "inside the list opened at line")
 add("syntax", "unknown directive `#includ`", [append(SCHEMES, "#includ \"other\"\n")],
-    "unknown directive '#includ' (valid: #include, and #eval in a value)")
+    "unknown directive '#includ' (valid: #include, #includeParameters, and #eval in a value)")
 add("syntax", "`#eval` of a malformed expression", [edit(FLUID, "rho0        1000;", "rho0        #eval \"1000 *\";")],
     "#eval \"1000 *\": Unexpected end of expression")
 add("syntax", "`#eval` dividing by zero", [edit(FLUID, "rho0        1000;", "rho0        #eval \"1000 / 0\";")],
