@@ -81,6 +81,22 @@ class CorrectionCases(unittest.TestCase):
         self.assertAlmostEqual(largest, 0.0340, delta=0.0020, msg="largest elevation error [m]")
         self.assertEqual(leaks, 0, "fluid behind the wall at some step")
 
+    def test_linear_sloshing_at_h_over_dx_15_to_t_4(self):
+        # The same tank forced at a linear amplitude (0.004 m) against linear modal theory
+        # (linearSloshing.py) over the first 4 s; doc/boundarySuite.md's rows run on to t = 10.
+        edits = [("system/generateParticlesDict", "spacing     0.02;", "spacing     0.04;"),
+                 ("system/controlDict", "endTime         10;", "endTime         4;"),
+                 ("system/controlDict", "writeInterval   0.02;", "writeInterval   1;"),
+                 ("constant/boundaryProperties", "amplitude (0.032 0)", "amplitude (0.004 0)")]
+        with tempfile.TemporaryDirectory() as work:
+            rms, largest, rms_relative, _, natural_period, leaks = run_case(work, "sloshingTank2D", edits, "linearSloshing.py")
+        self.assertAlmostEqual(rms, 0.00371, delta=0.0003, msg="RMS elevation error against linear theory [m]")
+        self.assertAlmostEqual(largest, 0.00945, delta=0.0008, msg="largest elevation error [m]")
+        self.assertAlmostEqual(rms_relative, 0.185, delta=0.015, msg="RMS error over the theory's largest elevation")
+        # 1.661 s by linear theory: every wall model's runs oscillate 3-8 % faster (doc/boundaryFindings.md).
+        self.assertAlmostEqual(natural_period, 1.601, delta=0.02, msg="fitted first natural period [s]")
+        self.assertEqual(leaks, 0, "fluid behind the wall at some step")
+
 
 if __name__ == "__main__":
     unittest.main()

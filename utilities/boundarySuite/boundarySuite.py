@@ -16,7 +16,7 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
 - flows that hurt, every wall model on the same case: the standard 2D dam break
   (damBreakWallPressure2D at H/dx = 20, 40, 80: blow-up, wall-pressure error against De Courcy
   et al. 2024, penetrations at every step), sloshing (sloshingTank2D against Faltinsen et al.
-  2000), a steep fast floor bulge (steepBulge2D, 50 % of the depth at 5x and 7.5x
+  2000, and at a small amplitude against linear modal theory), a steep fast floor bulge (steepBulge2D, 50 % of the depth at 5x and 7.5x
   deformingTank2D's wall speed; steepBulge3D), 3D still water (hydrostaticTank3D), each flow at
   three resolutions;
 each with the wall time that produced it (runs two at a time, one thread each). Penetrations
@@ -44,6 +44,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 WORK = os.path.join(ROOT, "build", "boundarySuite")
 QUICK = "--quick" in sys.argv
+sys.path.insert(0, os.path.join(ROOT, "cases", "sloshingTank2D"))
+from linearSloshing import AMPLITUDE as LINEAR_SLOSHING_AMPLITUDE  # noqa: E402
 
 CORRECTION = "repulsion { type monaghanKajtar; K 1e-9; }"
 TANK_MODELS = [
@@ -320,6 +322,17 @@ def sloshing_row(model, patch, layout, resolution):
     return (model, resolution, errors, most_behind_wall(directory), seconds, failure)
 
 
+def linear_sloshing_row(model, patch, layout, resolution):
+    """sloshingTank2D forced at linearSloshing.py's amplitude (0.004 m) against linear modal
+    theory, at dx = H/resolution."""
+    edits = [("linear", "constant/boundaryProperties", (r"amplitude \(0.032 0\)", "amplitude (%g 0)" % LINEAR_SLOSHING_AMPLITUDE))]
+    directory = flow_case("sloshingTank2D", model, patch, layout, 0.6 / resolution, edits=edits, layers=3)
+    generate(directory)
+    seconds, failure = run(directory)
+    errors = compare(("sloshingTank2D", "linearSloshing.py"), directory) if not failure else None
+    return (model, resolution, errors, most_behind_wall(directory), seconds, failure)
+
+
 def bulge_row(model, patch, layout, period, resolution):
     """steepBulge2D: the floor bulging by 0.3 (half the depth) over `period` (1.2 s shipped), at
     dx = H/resolution (H = 0.6 m; 30 shipped)."""
@@ -366,14 +379,15 @@ def flow_rows():
     pick = lambda resolutions: resolutions[:1] if QUICK else resolutions  # noqa: E731
     dam = in_parallel(dam_break_row, [(m, p, l, r) for r in pick((20, 40, 80)) for m, p, l in FLOW_MODELS])
     slosh = in_parallel(sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in FLOW_MODELS])
+    linear = in_parallel(linear_sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in FLOW_MODELS])
     bulge = in_parallel(bulge_row, [(m, p, l, period, r) for period, r in [(1.2, r) for r in pick((15, 30, 60))] + [(0.8, 30)]
                                     for m, p, l in FLOW_MODELS])
     bulge3d = in_parallel(bulge3d_row, [(m, p, l, r) for r in pick((8, 10, 12)) for m, p, l in FLOW_MODELS])
     box = in_parallel(box_row, [(m, p, l, r) for r in pick((6, 8, 10)) for m, p, l in FLOW_MODELS])
-    return dam, slosh, bulge, bulge3d, box
+    return dam, slosh, linear, bulge, bulge3d, box
 
 
-def flow_lines(dam, slosh, bulge, bulge3d, box):
+def flow_lines(dam, slosh, linear, bulge, bulge3d, box):
     outcome = lambda failure: failure.replace("|", "/") if failure else "ran to the end"  # noqa: E731
     lines = ["", "## Flows that hurt: every wall model on the same case", "",
              "Every run alone on one thread, two at a time; penetrations: the most fluid particles behind the wall's first layer of "
@@ -393,6 +407,17 @@ def flow_lines(dam, slosh, bulge, bulge3d, box):
                   "| model | H/dx | RMS error [m] | max error [m] | penetrations | wall time [s] | outcome |", "|---|---|---|---|---|---|---|"]
         for model, resolution, errors, leaks, seconds, failure in slosh:
             values = "%.4f | %.4f" % (errors[0], errors[1]) if errors else " | "
+            lines.append("| %s | %d | %s | %d | %.1f | %s |" % (model, resolution, values, leaks, seconds, outcome(failure)))
+    if linear:
+        lines += ["", "### Linear sloshing (sloshingTank2D at surge amplitude 0.004 m, to t = 10 s, against linear modal theory)", "",
+                  "The same gauge against linearSloshing.py's modal sum (largest elevation 0.020 m, k_1 eta = 0.037; undamped, so the "
+                  "free modes started at t = 0 beat for ever where a run's viscosity damps them); the run's elevation is its depth less "
+                  "the depth read at t = 0. Errors in m and over the theory's largest |eta|; T1: the run's first natural period, "
+                  "fitted (linearSloshing.py; linear theory 1.661 s).", "",
+                  "| model | H/dx | RMS error [m] | max error [m] | RMS / max eta | max / max eta | T1 [s] | penetrations | wall time [s] | outcome |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        for model, resolution, errors, leaks, seconds, failure in linear:
+            values = "%.5f | %.5f | %.3f | %.3f | %.3f" % tuple(errors[:5]) if errors else " | | | | "
             lines.append("| %s | %d | %s | %d | %.1f | %s |" % (model, resolution, values, leaks, seconds, outcome(failure)))
     lines += ["", "### Steep fast floor bulge (steepBulge2D: amplitude 0.3 = half the depth, one period)", "",
               "Period 1.2 s (shipped): 5x deformingTank2D's peak wall speed (0.1 pi m/s), 0.8 s: 7.5x. Pressure noise: RMS of p about its "
