@@ -12,6 +12,11 @@
 
 #include <fmt/format.h>
 
+#include <functional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
 namespace sph {
 
 namespace {
@@ -31,21 +36,35 @@ std::string listFamily(const Registry& registry, const std::string& where) {
 
 }  // namespace
 
-std::string modelCatalogue() {
+std::string modelCatalogue(const std::string& family) {
     // Names and coefficients are the same in every dimension; list the 2D registries.
-    std::string text;
-    text += listFamily(makeKernelRegistry<2>(), "system/sphSchemes, kernel { type ...; }");
-    text += "density formulation (system/sphSchemes, density { type ...; })\n"
-            "    continuity           d rho/dt = sum_j m_j v_ij . grad W_ij, integrated in time\n"
-            "    summation            rho_i = sum_j m_j W_ij over fluid and wall particles\n\n";
-    text += listFamily(makeViscosityRegistry(), "system/sphSchemes, viscosity { type ...; }");
-    text += listFamily(makeDensityDiffusionRegistry<2>(), "system/sphSchemes, densityDiffusion { type ...; }");
-    text += listFamily(makeEquationOfStateRegistry(), "constant/fluidProperties, equationOfState { type ...; c0 ...; }");
-    text += listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }");
-    text += listFamily(makePatchMotionRegistry<2>(), "constant/boundaryProperties, <patch> { motion { type ...; } }");
-    text += listFamily(makeTimeIntegratorRegistry<2>(), "system/timeIntegration, integrator { type ...; }");
-    text += listFamily(makeFunctionObjectRegistry<2>(), "system/controlDict, functions { <name> { type ...; } }");
-    text += listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");
+    const std::vector<std::pair<std::string, std::function<std::string()>>> families{
+        {"kernel", [] { return listFamily(makeKernelRegistry<2>(), "system/sphSchemes, kernel { type ...; }"); }},
+        {"density",
+         [] {
+             return std::string("density formulation (system/sphSchemes, density { type ...; })\n"
+                                "    continuity           d rho/dt = sum_j m_j v_ij . grad W_ij, integrated in time\n"
+                                "    summation            rho_i = sum_j m_j W_ij over fluid and wall particles\n\n");
+         }},
+        {"viscosity", [] { return listFamily(makeViscosityRegistry(), "system/sphSchemes, viscosity { type ...; }"); }},
+        {"densityDiffusion", [] { return listFamily(makeDensityDiffusionRegistry<2>(), "system/sphSchemes, densityDiffusion { type ...; }"); }},
+        {"equationOfState",
+         [] { return listFamily(makeEquationOfStateRegistry(), "constant/fluidProperties, equationOfState { type ...; c0 ...; }"); }},
+        {"boundary", [] { return listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }"); }},
+        {"motion", [] { return listFamily(makePatchMotionRegistry<2>(), "constant/boundaryProperties, <patch> { motion { type ...; } }"); }},
+        {"integrator", [] { return listFamily(makeTimeIntegratorRegistry<2>(), "system/timeIntegration, integrator { type ...; }"); }},
+        {"functionObject", [] { return listFamily(makeFunctionObjectRegistry<2>(), "system/controlDict, functions { <name> { type ...; } }"); }},
+        {"analytic",
+         [] {
+             return listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");
+         }},
+    };
+    std::string text, valid;
+    for (const auto& [name, list] : families) {
+        if (family.empty() || family == name) text += list();
+        valid += " " + name;
+    }
+    if (text.empty()) throw std::invalid_argument("unknown model family '" + family + "'; valid:" + valid);
     return text;
 }
 

@@ -6,6 +6,9 @@
 
 namespace sph {
 
-std::string modelCatalogue();
+// Every family, or the one named (kernel, density, viscosity, densityDiffusion, equationOfState,
+// boundary, motion, integrator, functionObject, analytic); std::invalid_argument naming the
+// valid ones for another name.
+std::string modelCatalogue(const std::string& family = "");
 
 }  // namespace sph

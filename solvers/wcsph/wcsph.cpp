@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -19,7 +20,10 @@ Weakly compressible SPH solver: runs an OpenFOAM-style case directory from its s
 
 Options:
   -case <dir>     case directory (default: the current directory)
-  -listModels     list every selectable model with its coefficients, defaults and reference
+  -listModels [FAMILY]
+                  list every selectable model with its coefficients, defaults and reference;
+                  FAMILY (kernel, density, viscosity, densityDiffusion, equationOfState,
+                  boundary, motion, integrator, functionObject, analytic) lists that one only
   -rates          evaluate the right-hand side once at the start time (accelerations, density
                   rates, boundary corrections) and write it to postProcessing/rates/<time>/
                   as .vtu and .csv
@@ -46,7 +50,13 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (arg == "-listModels") {
-            fmt::print("{}", sph::modelCatalogue());
+            const std::string family = i + 1 < argc && argv[i + 1][0] != '-' ? argv[i + 1] : "";
+            try {
+                fmt::print("{}", sph::modelCatalogue(family));
+            } catch (const std::invalid_argument& e) {
+                fmt::print(stderr, "error: {}\n", e.what());
+                return 2;
+            }
             return 0;
         }
         if (arg == "-rates") {

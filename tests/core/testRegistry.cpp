@@ -62,3 +62,23 @@ TEST(ModelCatalogue, ListsEveryFamilyWithTheMotionsAndTheirKeywords) {
         EXPECT_NE(catalogue.find("    " + name + " "), std::string::npos) << name;
     EXPECT_NE(catalogue.find("rampTime"), std::string::npos);
 }
+
+TEST(ModelCatalogue, ListsOneFamilyByNameAndNamesTheValidOnes) {
+    const std::string motions = sph::modelCatalogue("motion");
+    EXPECT_EQ(motions.find("motion ("), 0u);
+    EXPECT_EQ(motions.find("kernel ("), std::string::npos);
+    EXPECT_NE(sph::modelCatalogue("boundary").find("deficiencyCorrectionBoundaryIntegral"), std::string::npos);
+    // Every family alone, and the whole catalogue is their sum.
+    std::string all;
+    for (const char* family : {"kernel", "density", "viscosity", "densityDiffusion", "equationOfState", "boundary", "motion", "integrator",
+                               "functionObject", "analytic"})
+        all += sph::modelCatalogue(family);
+    EXPECT_EQ(all, sph::modelCatalogue());
+    try {
+        sph::modelCatalogue("kernels");
+        ADD_FAILURE() << "no error for an unknown family";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion equationOfState "
+                                         "boundary motion integrator functionObject analytic");
+    }
+}

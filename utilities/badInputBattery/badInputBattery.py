@@ -268,6 +268,8 @@ add("overwrite", "a time directory without fluid.vtu (a warning)", [action(lambd
 add("command line", "`wcsph -bogus`", [], "unknown or incomplete option '-bogus'", tools=("wcsph",), arguments=("-bogus",), outcome="refused")
 add("command line", "`wcsph -case` without a directory", [], "unknown or incomplete option '-case'", tools=("wcsph",), arguments=("-case",),
     outcome="refused")
+add("command line", "`wcsph -listModels kernels`", [], "unknown model family 'kernels'; valid: kernel density", tools=("wcsph",),
+    arguments=("-listModels", "kernels"), outcome="refused")
 add("command line", "`generateParticles -force`", [], "unknown or incomplete option '-force'", tools=("generateParticles",), arguments=("-force",),
     outcome="refused")
 
