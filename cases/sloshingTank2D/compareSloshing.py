@@ -72,4 +72,5 @@ def main():
     figure.savefig(os.path.join(cases[0], "sloshingComparison.png"), dpi=120)
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/FatalError.hpp"
+#include "core/Spelling.hpp"
 
 #include <functional>
 #include <map>
@@ -48,7 +49,8 @@ public:
     std::string unknownMessage(const std::string& name) const {
         std::string message = "unknown " + family_ + " '" + name + "'; valid " + family_ + " names are:";
         for (const auto& [valid, item] : entries_) message += "\n    " + valid;
-        return message;
+        const std::string nearest = nearestSpelling(name, names());
+        return nearest.empty() ? message : message + "\n(did you mean '" + nearest + "'?)";
     }
 
     const std::string& family() const { return family_; }

@@ -25,14 +25,20 @@ double RunControls::nextWriteAfter(double t) const {
 ControlDictWatcher::ControlDictWatcher(std::filesystem::path file, bool enabled) : file_(std::move(file)), enabled_(enabled) {
     std::error_code ec;
     lastWrite_ = std::filesystem::last_write_time(file_, ec);
+    lastSize_ = std::filesystem::file_size(file_, ec);
 }
 
 std::optional<RunControls> ControlDictWatcher::changed(const RunControls& current, double t) {
     if (!enabled_) return std::nullopt;
     std::error_code ec;
     const auto lastWrite = std::filesystem::last_write_time(file_, ec);
-    if (ec || lastWrite == lastWrite_) return std::nullopt;
+    if (ec) return std::nullopt;
+    // The size too: an editor's write can truncate and refill the file within the clock's
+    // tick, and a read between the two must not hide the finished edit.
+    const std::uintmax_t size = std::filesystem::file_size(file_, ec);
+    if (ec || (lastWrite == lastWrite_ && size == lastSize_)) return std::nullopt;
     lastWrite_ = lastWrite;
+    lastSize_ = size;
     try {
         const RunControls controls = RunControls::read(Dictionary::fromFile(file_, "controlDict"));
         if (!(controls.endTime > t))

@@ -34,6 +34,7 @@ private:
     std::filesystem::path file_;
     bool enabled_;
     std::filesystem::file_time_type lastWrite_;
+    std::uintmax_t lastSize_ = 0;
 };
 
 }  // namespace sph

@@ -36,6 +36,20 @@ TEST(Registry, UnknownNameListsTheSortedValidNamesWithItsLocation) {
     }
 }
 
+TEST(Registry, AMisspeltNameSaysWhatWasMeant) {
+    const auto kernels = sph::makeKernelRegistry<2>();
+    try {
+        kernels.create("wendlandc4", at(1, 28), 1.0);
+        FAIL() << "no error for a misspelt kernel";
+    } catch (const FatalError& e) {
+        EXPECT_STREQ(e.what(),
+                     "system/sphSchemes:1:28: error: unknown kernel 'wendlandc4'; valid kernel names are:\n"
+                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4\n(did you mean 'wendlandC4'?)");
+    }
+    // Nothing near: no guess (the unknown name above, gaussian, gets none either).
+    EXPECT_EQ(kernels.unknownMessage("sph").find("did you mean"), std::string::npos);
+}
+
 TEST(Registry, DuplicateRegistrationIsAnError) {
     Registry<int> registry("viscosity");
     registry.add("artificial", {}, [] { return 1; });

@@ -1,5 +1,6 @@
 // A running case under the conditions of a shared machine: its controlDict edited while it
 // runs, the disk filling up, an unwritable case directory. Each runs wcsph as a process.
+#include "driver/RunControls.hpp"
 #include "generation/ParticleGenerator.hpp"
 #include "support/CaseFixture.hpp"
 #include "support/SolverProcess.hpp"
@@ -63,6 +64,27 @@ TEST(RunControl, ControlDictEditsTakeEffectWhileRunning) {
     EXPECT_TRUE(std::filesystem::exists(dir / "0.195/fluid.vtu"));
     EXPECT_TRUE(std::filesystem::exists(dir / "0.2/fluid.vtu"));
     EXPECT_FALSE(std::filesystem::exists(dir / "0.205"));
+}
+
+TEST(RunControl, AnEditFinishedWithinTheClocksTickIsRead) {
+    // An editor truncates the file and writes it again; read in between (a warning: endTime
+    // missing), the finished edit can carry the same modification time. Its size tells.
+    const auto dir = freshDirectory();
+    const auto file = dir / "controlDict";
+    writeFile(file, "endTime 5; writeInterval 0.01;\n");
+    sph::ControlDictWatcher watcher(file, true);
+    const sph::RunControls current{5.0, 0.01};
+    const auto before = std::filesystem::last_write_time(file);
+    writeFile(file, "writeInterval 0.01;\n");  // the half-written state
+    std::filesystem::last_write_time(file, before + std::chrono::milliseconds(1));
+    EXPECT_FALSE(watcher.changed(current, 0.1));  // read half-written: reported and ignored
+    writeFile(file, "endTime 0.2; writeInterval 0.005;\n");
+    std::filesystem::last_write_time(file, before + std::chrono::milliseconds(1));
+    const auto controls = watcher.changed(current, 0.1);
+    ASSERT_TRUE(controls);
+    EXPECT_DOUBLE_EQ(controls->endTime, 0.2);
+    EXPECT_DOUBLE_EQ(controls->writeInterval, 0.005);
+    EXPECT_FALSE(watcher.changed(current, 0.1));  // read once
 }
 
 TEST(RunControl, RunTimeModifiableOffIgnoresEdits) {
