@@ -136,7 +136,7 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, c
     pairRanges_.resize(n);
     pairsPerThread_.resize(static_cast<std::size_t>(omp_get_max_threads()));
     blend_.assign(n, Vec<D>::Zero());
-    if (Weighting::normalised || radialDirection_) areaIntegral_.assign(n, Vec<D>::Zero());
+    if (separateAreaIntegral(radialDirection_)) areaIntegral_.assign(n, Vec<D>::Zero());
     push_.assign(end, 0.0);  // indexed by wall particle; [0, begin) unused
     virtualDensity_.assign(end, 0.0);
     // The case's options as template parameters: the pair loops have no branch on them. Each
@@ -164,8 +164,7 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, c
 template <int D, class Weighting>
 template <bool Radial, class Kernel>
 void DeficiencyCorrection<D, Weighting>::weighPairs(const FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const Kernel& kernel) {
-    // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
-    constexpr bool separateAreaIntegral = Weighting::normalised || Radial;
+    constexpr bool ownAreaIntegral = separateAreaIntegral(Radial);
     const std::size_t n = system.fluid.ownedCount();
     const Vec<D>* x = system.fluid.position.data();
     const Vec<D>* normal = system.walls.vector("normal").data();
@@ -190,13 +189,13 @@ void DeficiencyCorrection<D, Weighting>::weighPairs(const FluidSystem<D>& system
                 const double w = Weighting::template weight<D>(distance, Vec<D>(r / distance), normal[j], spacing[j], area[j], radius);
                 sum += w;
                 blend += (W * w) * direction<Radial>(normal[j], r, distance);
-                if constexpr (separateAreaIntegral) areaSum += (W * area[j]) * normal[j];
+                if constexpr (ownAreaIntegral) areaSum += (W * area[j]) * normal[j];
                 pairs.push_back({j, W, W * w, distance, r});
             });
             pairRanges_[i] = {static_cast<std::uint32_t>(omp_get_thread_num()), first, static_cast<std::uint32_t>(pairs.size())};
             weightSum_[i] = sum;
             blend_[i] = (Weighting::normalised && sum > 0.0) ? Vec<D>(blend / sum) : blend;
-            if constexpr (separateAreaIntegral) areaIntegral_[i] = areaSum;
+            if constexpr (ownAreaIntegral) areaIntegral_[i] = areaSum;
         }
     }
 }
@@ -219,7 +218,7 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(FluidSystem<D>& system
     double* rhoWall = system.walls.scalar("density").data();
     const double radius = system.supportRadius();
     const bool literal = calibration_ == DeficiencyCalibration::Literal;
-    const Vec<D>* areaIntegral = (Weighting::normalised || radialDirection_) ? areaIntegral_.data() : blend_.data();
+    const Vec<D>* areaIntegral = separateAreaIntegral(radialDirection_) ? areaIntegral_.data() : blend_.data();
     const auto& fluidCells = system.fluidCells();
     // Each wall particle's pressure, density, scale R_j and push.
 #pragma omp parallel

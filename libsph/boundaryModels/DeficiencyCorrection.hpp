@@ -90,6 +90,8 @@ private:
     void setWallParticles(FluidSystem<D>& system, std::size_t begin, std::size_t end, const Vec<D>& gravity, double lambda, const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner>
     void applyCorrection(FluidSystem<D>& system, const Vec<D>& gravity);
+    // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
+    static constexpr bool separateAreaIntegral(bool radial) { return Weighting::normalised || radial; }
     // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.
     template <bool Radial>
     static Vec<D> direction(const Vec<D>& normal, const Vec<D>& r, double distance) {
