@@ -7,10 +7,10 @@
 
 namespace sph {
 
-enum class Stage { Neighbours, Density, Boundary, Forces, Integrator, FunctionObjects, Output, Count };
+enum class Stage { Neighbours, Density, Boundary, Forces, Integrator, Shifting, FunctionObjects, Output, Count };
 
 inline constexpr std::array<std::string_view, static_cast<std::size_t>(Stage::Count)> stageNames{
-    "neighbour search", "density + pressure", "boundary models", "forces", "integrator", "function objects", "output"};
+    "neighbour search", "density + pressure", "boundary models", "forces", "integrator", "particle shifting", "function objects", "output"};
 
 class StageTimers {
 public:

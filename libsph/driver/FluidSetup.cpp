@@ -187,6 +187,11 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     if (density == DensityFormulation::Summation && !std::holds_alternative<NoDensityDiffusion>(diffusion))
         diffusionDict.fail("type", "density diffusion acts on the continuity equation; with summation density select 'none'");
     fmt::print("Selecting densityDiffusion {}\n", describe<D>(diffusion));
+    // Optional: a case that does not name it shifts nothing.
+    const Dictionary* shiftingDict = schemes.findSubDict("particleShifting");
+    const ParticleShifting shifting =
+        shiftingDict ? selectByType(makeParticleShiftingRegistry(), *shiftingDict, *shiftingDict, context) : ParticleShifting{NoShifting{}, {}, dx};
+    if (shiftingDict) fmt::print("Selecting particleShifting {}\n", describe(shifting));
 
     // Boundary patches: one model per patch named in the wall state.
     setup.patchNames = wallHeader.patchNames;
@@ -253,6 +258,10 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
                                                     setup.courant));
     setup.maxDeltaT = timeIntegration.getPositiveOrDefault("maxDeltaT", std::numeric_limits<double>::infinity());
     setup.fixedDeltaT = timeIntegration.getPositiveOrDefault("fixedDeltaT", 0.0);
+    if (shifting.enabled() && !setup.integrator->allowsReordering())
+        shiftingDict->fail("type", fmt::format("particle shifting moves the particles after every step, which the history of integrator '{}' "
+                                               "cannot follow; select another integrator (system/timeIntegration) or particleShifting none",
+                                               setup.integratorType));
     fmt::print("Selecting time integrator {}: courant {:g}{}{}\n", setup.integrator->describe(), setup.courant,
                std::isfinite(setup.maxDeltaT) ? fmt::format(", maxDeltaT {:g}", setup.maxDeltaT) : "",
                setup.fixedDeltaT > 0.0 ? fmt::format(", fixedDeltaT {:g}", setup.fixedDeltaT) : "");
@@ -262,7 +271,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
             throw FatalError(fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
                                          "lengthen the domain or reduce hdx",
                                          fluidFile.string(), "xyz"[d], domainMax[d] - domainMin[d], 3.0 * support));
-    FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density};
+    FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density, shifting};
     setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
                                                     properties.gravity, properties.gravityRampTime, periodic);
     setup.integrator->checkCompatible(*setup.system, integratorDict);

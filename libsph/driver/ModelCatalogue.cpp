@@ -3,6 +3,7 @@
 #include "analytic/AnalyticSolution.hpp"
 #include "boundaryModels/BoundaryModel.hpp"
 #include "densityDiffusion/DensityDiffusion.hpp"
+#include "particleShifting/ParticleShifting.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "kernels/Kernel.hpp"
@@ -48,6 +49,7 @@ std::string modelCatalogue(const std::string& family) {
          }},
         {"viscosity", [] { return listFamily(makeViscosityRegistry(), "system/sphSchemes, viscosity { type ...; }"); }},
         {"densityDiffusion", [] { return listFamily(makeDensityDiffusionRegistry<2>(), "system/sphSchemes, densityDiffusion { type ...; }"); }},
+        {"particleShifting", [] { return listFamily(makeParticleShiftingRegistry(), "system/sphSchemes, particleShifting { type ...; } (optional)"); }},
         {"equationOfState",
          [] { return listFamily(makeEquationOfStateRegistry(), "constant/fluidProperties, equationOfState { type ...; c0 ...; }"); }},
         {"boundary", [] { return listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }"); }},

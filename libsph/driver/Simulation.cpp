@@ -177,6 +177,10 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         const double target = std::min(nextWrite, controls.endTime);
         if (t + dt > target - timeTolerance) dt = target - t;
         const double taken = integrator.step(system, t, dt);
+        if (system.shiftsParticles()) {
+            system.shiftParticles(taken);
+            integrator.stateChangedOutside();
+        }
         if (system.wrapPeriodic()) integrator.stateChangedOutside();
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;

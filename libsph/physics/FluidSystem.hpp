@@ -14,6 +14,8 @@
 //   5. wall forces  repulsion and deficiency-correction patches add their accelerations; the
 //                   acceleration of stage 4 is kept as uncorrectedAcceleration when one of them
 //                   reads it
+// Particle shifting, where selected, is no part of the right-hand side: the driver calls
+// shiftParticles after every step.
 // The wall set holds the wall-particle patches first, then the wall-force patches; only the
 // first enter the kernel sums.
 #pragma once
@@ -26,6 +28,7 @@
 #include "kernels/Kernel.hpp"
 #include "physics/CellOrderedFluid.hpp"
 #include "motion/PatchMotion.hpp"
+#include "particleShifting/ParticleShifting.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "viscosity/Viscosity.hpp"
 
@@ -58,6 +61,7 @@ struct FluidModels {
     Viscosity viscosity;
     DensityDiffusion<D> diffusion;
     DensityFormulation density = DensityFormulation::Continuity;
+    ParticleShifting shifting{};  // none unless the case selects one
 };
 
 template <int D>
@@ -85,6 +89,12 @@ public:
     // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
     // With ViscousOnly, the acceleration is the viscous term alone and the density rates are zero.
     void evaluateRates(double t, RateTerms terms = RateTerms::All);
+
+    // Moves every fluid particle by dt times its shifting velocity (written as the field
+    // shiftingVelocity), from the state at the end of a step; call between steps only. Leaves
+    // each particle's free-surface indicator in the unwritten field freeSurfaceLambda.
+    void shiftParticles(double dt);
+    bool shiftsParticles() const { return models_.shifting.enabled(); }
 
     // Reorders the fluid by cell for memory locality; call between steps only.
     void sortFluidByCell();

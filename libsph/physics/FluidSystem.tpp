@@ -47,6 +47,10 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     fluid.addScalar("pressure", 0.0);
     fluid.addVector("acceleration", Vec<D>::Zero());
     if (continuity()) fluid.addScalar("densityRate", 0.0);
+    if (shiftsParticles()) {
+        fluid.addVector("shiftingVelocity", Vec<D>::Zero());
+        fluid.addScalar("freeSurfaceLambda", 1.0, false);  // not written: recomputed every step
+    }
     walls.addScalar("pressure", 0.0);
     walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     // Written where a patch moves: its velocity is then worth colouring by (and zero elsewhere).
@@ -707,3 +711,5 @@ double FluidSystem<D>::stableTimeStep(double courant, bool viscousLimit) const {
 }
 
 }  // namespace sph
+
+#include "physics/ParticleShiftingPass.tpp"

@@ -84,15 +84,15 @@ TEST(ModelCatalogue, ListsOneFamilyByNameAndNamesTheValidOnes) {
     EXPECT_NE(sph::modelCatalogue("boundary").find("deficiencyCorrectionBoundaryIntegral"), std::string::npos);
     // Every family alone, and the whole catalogue is their sum.
     std::string all;
-    for (const char* family : {"kernel", "density", "viscosity", "densityDiffusion", "equationOfState", "boundary", "motion", "integrator",
-                               "functionObject", "analytic"})
+    for (const char* family : {"kernel", "density", "viscosity", "densityDiffusion", "particleShifting", "equationOfState", "boundary", "motion",
+                               "integrator", "functionObject", "analytic"})
         all += sph::modelCatalogue(family);
     EXPECT_EQ(all, sph::modelCatalogue());
     try {
         sph::modelCatalogue("kernels");
         ADD_FAILURE() << "no error for an unknown family";
     } catch (const std::invalid_argument& e) {
-        EXPECT_EQ(std::string(e.what()), "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion equationOfState "
-                                         "boundary motion integrator functionObject analytic");
+        EXPECT_EQ(std::string(e.what()), "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion particleShifting "
+                                         "equationOfState boundary motion integrator functionObject analytic");
     }
 }

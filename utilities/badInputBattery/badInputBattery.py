@@ -95,6 +95,7 @@ add("unknown name", "kernel `wendland`", [edit(SCHEMES, "type wendlandC2;", "typ
 add("unknown name", "density `summaton`", [edit(SCHEMES, "type continuity;", "type summaton;")], "valid")
 add("unknown name", "viscosity `artifical`", [edit(SCHEMES, "type artificial;", "type artifical;")], "valid")
 add("unknown name", "density diffusion `fourtaka`", [edit(SCHEMES, "type fourtakas;", "type fourtaka;")], "valid")
+add("unknown name", "particle shifting `sunn`", [append(SCHEMES, "particleShifting { type sunn; }\n")], "did you mean 'sun'")
 add("unknown name", "integrator `symplectik`", [edit(TIME, "type symplectic;", "type symplectik;")], "valid")
 add("unknown name", "equation of state `tate`", [edit(FLUID, "type            tait;", "type            tate;")], "valid")
 add("unknown name", "boundary model `ghostParticles`", [edit(BOUNDARY, "dummyParticles", "ghostParticles")],
@@ -182,9 +183,14 @@ add("out of range", "lineSample `points 1`", [edit(CONTROL, "points             
     case="hydrostaticTank2D")
 add("out of range", "`eulerEvery 0`", [edit(TIME, "type symplectic;", "type verlet; eulerEvery 0;")], "must be at least 1, found 0")
 add("out of range", "`delta -0.1`", [edit(SCHEMES, "delta 0.1;", "delta -0.1;")], "delta")
+add("out of range", "particle shifting `n 2.5`", [append(SCHEMES, "particleShifting { type sun; n 2.5; }\n")], "whole power, found 2.5")
+add("out of range", "particle shifting `surfaceLambda 1.5`", [append(SCHEMES, "particleShifting { type lind; surfaceLambda 1.5; }\n")],
+    "a threshold above it marks every particle as free surface")
 
 # Inconsistent models.
 add("inconsistent models", "density diffusion with summation density", [edit(SCHEMES, "type continuity;", "type summation;")], "diffusion")
+add("inconsistent models", "particle shifting with `cvode`", [append(SCHEMES, "particleShifting { type sun; }\n"), edit(TIME, "type symplectic;", "type cvode;")],
+    "particle shifting moves the particles after every step")
 add("inconsistent models", "`velocityBlock` with artificial viscosity", [edit(TIME, "type symplectic;", "type arkodeIMEX; jacobianTimesVector velocityBlock;")],
     "velocityBlock is exact only for a viscosity linear in velocity (laminar)")
 add("inconsistent models", "a free body with `verlet`", [edit(TIME, "type symplectic;", "type verlet;")],

@@ -1,0 +1,186 @@
+// FluidSystem<D>::shiftParticles, included by FluidSystem.tpp. Once a step, from the state at
+// its end:
+//   1. sums      one gather over each particle's neighbours, in cell order: the moment matrix
+//                and concentration gradient of FreeSurfaceMarrone2010.hpp (lambda_i, n_i) and
+//                the law's sum (FickianShiftingLind2012.hpp, ShiftingSun2017.hpp), walls
+//                completing them
+//   2. surface   each particle within the support of a free-surface particle takes the mean of
+//                their normals (free-surface particles are few: serial)
+//   3. shift     the law's velocity; near the free surface its component along that normal removed;
+//                towards a one-layer wall never (its component against the normal of each of its
+//                particles within the support removed: a particle through the wall is lost), nor
+//                towards a wall particle of a layered wall nearer than dx (their sums are complete:
+//                removing the component everywhere near them drew the fluid off the walls, the
+//                sloshing tank's level at a side wall sinking by 0.6 dx in 10 s); bounded; then
+//                x_i += dt delta u_i
+// A particle's density, where it follows the continuity equation, takes the shift's Taylor term
+// rho_i += delta r . <grad rho>_i (Lind et al.), the gradient renormalised as in delta-SPH; without
+// it a shifted particle kept the density of where it came from, and the pressure of a corner the
+// shift had emptied fell until the fluid ran into it (sloshingTank2D with dummy particles: a
+// particle through the bottom corner at t = 8 s). The velocity is not corrected (as Sun et al.).
+#include "kernels/KernelOutsideFraction.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace sph {
+
+namespace {
+
+// The smallest eigenvalue of a symmetric matrix, in closed form (Eigen's iterative solver is not
+// needed at D <= 3).
+template <int D>
+double smallestEigenvalue(const Eigen::Matrix<double, D, D>& m) {
+    if constexpr (D == 1) {
+        return m(0, 0);
+    } else if constexpr (D == 2) {
+        const double mean = 0.5 * (m(0, 0) + m(1, 1)), half = 0.5 * (m(0, 0) - m(1, 1));
+        return mean - std::sqrt(half * half + m(0, 1) * m(0, 1));
+    } else {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> solver;
+        solver.computeDirect(m, Eigen::EigenvaluesOnly);
+        return solver.eigenvalues()[0];
+    }
+}
+
+}  // namespace
+
+template <int D>
+void FluidSystem<D>::shiftParticles(double dt) {
+    auto timer = timers.time(Stage::Shifting);
+    fluidCells_.build(fluid.position);
+    const std::size_t n = fluid.ownedCount();
+    const Vec<D>* v = fluid.vector("velocity").data();
+    double maxSpeed2 = 0.0;
+#pragma omp parallel for reduction(max : maxSpeed2) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) maxSpeed2 = std::max(maxSpeed2, v[i].squaredNorm());
+    const double maxSpeed = std::sqrt(maxSpeed2);
+    std::visit(
+        [&](const auto& kernel, const auto& law) {
+            using Law = std::decay_t<decltype(law)>;
+            if constexpr (!Law::enabled) {
+                return;
+            } else if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
+                throw std::logic_error(pairLoopsNotCompiled);
+            } else {
+                using Matrix = Eigen::Matrix<double, D, D>;
+                const double radius = supportRadius_;
+                const double inverseWdx = 1.0 / kernel.value(models_.shifting.dx);
+                const FreeSurfaceMarrone2010 surface = models_.shifting.surface;
+                const KernelOutsideFraction<D> outsideFraction(kernel);
+                const double* m = fluid.scalar("mass").data();
+                const double* rho = fluid.scalar("density").data();
+                const bool anyWalls = walls.size() > 0;
+                const double* wallMass = anyWalls ? walls.scalar("mass").data() : nullptr;
+                const double* wallDensity = anyWalls ? walls.scalar("density").data() : nullptr;
+                const Vec<D>* wallNormal = anyWalls ? walls.vector("normal").data() : nullptr;
+                const double* wallArea = anyWalls && walls.hasScalar("area") ? walls.scalar("area").data() : nullptr;
+                const bool oneLayerWalls = wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
+                Vec<D>* shift = fluid.vector("shiftingVelocity").data();
+                const bool evolvesDensity = continuity();
+                double* density = fluid.scalar("density").data();
+                const auto& cells = fluidCells_;
+                std::vector<double> volume(cells.pointCount());
+                double* lambda = fluid.scalar("freeSurfaceLambda").data();
+                std::vector<Vec<D>> outward(n), lawSum(n), surfaceNormal(n, Vec<D>::Zero()), densityGradient(n);
+                std::vector<char> nearWall(n, 0);
+#pragma omp parallel for schedule(static)
+                for (std::size_t j = 0; j < volume.size(); ++j) volume[j] = m[j] / rho[j];
+                // Every surface element of a one-layer wall near x (wall-force patches).
+                const auto forEachWallElement = [&](const Vec<D>& x, auto&& visit) {
+                    for (const Patch<D>& patch : patches)
+                        if (patch.cells)
+                            patch.cells->forEachNeighbour(x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) { visit(w, r, r2); });
+                };
+#pragma omp parallel
+                {
+                    auto stencilCell = std::numeric_limits<std::uint32_t>::max();
+                    typename CellLinkedList<D>::StencilRanges stencil, wallStencil;
+#pragma omp for schedule(static, 256)
+                    for (std::size_t k = 0; k < cells.pointCount(); ++k) {
+                        const std::size_t i = cells.sortedIndex(k);
+                        if (i >= n) continue;
+                        if (cells.cellAt(k) != stencilCell) {  // the particles of a cell share their stencils
+                            stencilCell = cells.cellAt(k);
+                            stencil = cells.stencilRanges(cells.sortedPosition(k));
+                            wallStencil = wallCells_.anyPointNear(stencilCell) ? wallCells_.stencilRanges(cells.sortedPosition(k))
+                                                                             : typename CellLinkedList<D>::StencilRanges{};
+                        }
+                        Matrix moment = Matrix::Zero();
+                        Vec<D> gradient = Vec<D>::Zero(), sum = Vec<D>::Zero(), densityDifferences = Vec<D>::Zero();
+                        const auto addVolume = [&](double V, double density, const Vec<D>& r, double r2) {
+                            const double distance = std::sqrt(r2);
+                            const double VF = V * kernel.gradientFactor(distance);
+                            moment.noalias() -= (VF * r) * r.transpose();
+                            gradient += VF * r;
+                            sum += (law.pairWeight(kernel.value(distance) * inverseWdx) * VF) * r;
+                            densityDifferences += ((density - rho[i]) * VF) * r;
+                        };
+                        const Vec<D>& x = fluid.position[i];
+                        cells.forEachNeighbour(stencil, x, radius,
+                                               [&](std::uint32_t j, const Vec<D>& r, double r2) { addVolume(volume[j], rho[j], r, r2); });
+                        wallCells_.forEachNeighbour(wallStencil, x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+                            addVolume(wallMass[w] / wallDensity[w], wallDensity[w], r, r2);
+                            nearWall[i] = 1;
+                        });
+                        // Renormalised by the particles' own moment (exact for a linear field whatever the support holds).
+                        densityGradient[i] = std::abs(moment.determinant()) > 0.1 ? Vec<D>(moment.inverse() * densityDifferences) : densityDifferences;
+                        if (oneLayerWalls) {
+                            double behindWall = 0.0;
+                            forEachWallElement(x, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+                                const double distance = std::sqrt(r2);
+                                const double AW = wallArea[w] * kernel.value(distance);
+                                behindWall += outsideFraction.element(distance, r.dot(wallNormal[w]), wallArea[w]);
+                                moment.noalias() += (AW * r) * wallNormal[w].transpose();
+                                gradient -= AW * wallNormal[w];
+                                sum -= AW * wallNormal[w];
+                                nearWall[i] = 1;
+                            });
+                            moment += behindWall * Matrix::Identity();
+                        }
+                        lambda[i] = smallestEigenvalue<D>(0.5 * (moment + moment.transpose()));
+                        const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
+                        const double length = inward.norm();
+                        outward[i] = length > 1e-12 ? Vec<D>(-inward / length) : Vec<D>::Zero();
+                        lawSum[i] = sum;
+                    }
+                }
+                // Near the surface a particle's own normal is noise (its sums are nearly complete):
+                // each takes the kernel-weighted mean of the free-surface particles' normals around it.
+                for (std::size_t i = 0; i < n; ++i) {
+                    if (lambda[i] >= surface.surfaceLambda) continue;
+                    cells.forEachNeighbour(fluid.position[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) {
+                        if (j < n) surfaceNormal[j] += kernel.value(std::sqrt(r2)) * outward[i];
+                    });
+                }
+#pragma omp parallel for schedule(static)
+                for (std::size_t i = 0; i < n; ++i) {
+                    shift[i] = Vec<D>::Zero();
+                    if (lambda[i] < surface.splashLambda) continue;
+                    const double speed = v[i].norm();
+                    Vec<D> u = -law.scale(speed, maxSpeed) * lawSum[i];
+                    if (const double length = surfaceNormal[i].norm(); length > 0.0) {
+                        const Vec<D> normal = surfaceNormal[i] / length;
+                        u -= u.dot(normal) * normal;
+                    }
+                    if (nearWall[i]) {
+                        const auto awayFromWall = [&](std::uint32_t w, const Vec<D>&, double) {
+                            const double towards = u.dot(wallNormal[w]);
+                            if (towards < 0.0) u -= towards * wallNormal[w];
+                        };
+                        // Layers of wall particles complete the sums: only a particle nearer than
+                        // the spacing to one of them is kept from coming nearer still.
+                        wallCells_.forEachNeighbour(fluid.position[i], models_.shifting.dx, awayFromWall);
+                        forEachWallElement(fluid.position[i], awayFromWall);
+                    }
+                    const double bound = law.speedBound(speed, maxSpeed), magnitude = u.norm();
+                    if (magnitude > bound) u *= bound / magnitude;
+                    shift[i] = u;
+                    fluid.position[i] += dt * u;
+                    if (evolvesDensity) density[i] += dt * u.dot(densityGradient[i]);
+                }
+            }
+        },
+        models_.kernel, models_.shifting.law);
+}
+
+}  // namespace sph

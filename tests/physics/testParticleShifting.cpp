@@ -1,0 +1,197 @@
+// Particle shifting (FickianShiftingLind2012, ShiftingSun2017, the free-surface treatment of
+// FreeSurfaceMarrone2010): the shift of one displaced particle against Sun et al.'s sum written
+// out here, nothing on a uniform lattice, a random lattice evened out, a flat free surface
+// detected (lambda ~ 1/2, as computed apart for the lattice) and never crossed, walls
+// of wall particles and one-layer walls both completing the sums, a one-layer wall never
+// approached.
+#include "boundaryModels/RepulsiveWall.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace sph;
+
+namespace {
+
+constexpr double rho0 = 1000.0, dx = 0.02, h = 1.3 * dx, c0 = 20.0;
+
+ParticleShifting sun() { return {ShiftingSun2017(0.2, 4, h), {}, dx}; }
+ParticleShifting lind() { return {FickianShiftingLind2012(2.0, h), {}, dx}; }
+
+// nx x ny lattice from (0, 0) at spacing dx, moving at (1, 0) m/s.
+ParticleSet<2> lattice(int nx, int ny) {
+    ParticleSet<2> fluid("fluid");
+    fluid.resize(static_cast<std::size_t>(nx * ny));
+    fluid.addScalar("density", rho0);
+    fluid.addScalar("mass", rho0 * dx * dx);
+    fluid.addVector("velocity", Vec<2>(1.0, 0.0));
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const auto k = static_cast<std::size_t>(j * nx + i);
+            fluid.position[k] = Vec<2>((i + 0.5) * dx, (j + 0.5) * dx);
+            fluid.globalId[k] = static_cast<std::int64_t>(k);
+        }
+    return fluid;
+}
+
+// `layers` rows of wall particles under y = 0 (layers 1: one row on y = 0, with area dx), normal +y.
+ParticleSet<2> floorOf(int nx, int layers) {
+    ParticleSet<2> walls("walls");
+    walls.resize(static_cast<std::size_t>(nx * layers));
+    walls.addScalar("mass", rho0 * dx * dx);
+    walls.addScalar("spacing", dx);
+    walls.addVector("normal", Vec<2>(0.0, 1.0));
+    walls.addInteger("patch", 0);
+    for (int l = 0; l < layers; ++l)
+        for (int i = 0; i < nx; ++i) {
+            const auto w = static_cast<std::size_t>(l * nx + i);
+            walls.position[w] = Vec<2>((i + 0.5) * dx, layers == 1 ? 0.0 : -(l + 0.5) * dx);
+            walls.globalId[w] = static_cast<std::int64_t>(w);
+        }
+    return walls;
+}
+
+// Periodic in x over nx dx; y from -0.2 to 1; no gravity. A one-layer floor is a wall-force patch.
+std::unique_ptr<FluidSystem<2>> system(ParticleSet<2> fluid, ParticleSet<2> walls, int nx, ParticleShifting shifting, bool oneLayerFloor = false,
+                                       bool periodicY = false, double height = 1.0) {
+    std::vector<Patch<2>> patches;
+    if (oneLayerFloor) {
+        patches.resize(1);
+        patches[0].name = "floor";
+        patches[0].end = walls.size();
+        patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-12, dx, 0.0, 0.0});
+    }
+    FluidModels<2> models{WendlandC2<2>(h), LinearEquationOfState(rho0, c0, 0.0), NoViscosity{}, NoDensityDiffusion{}, DensityFormulation::Continuity,
+                          shifting};
+    return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(0.0, periodicY ? 0.0 : -0.2),
+                                            Vec<2>(nx * dx, periodicY ? height : 1.0), Vec<2>::Zero(), 0.0, std::array<bool, 2>{true, periodicY});
+}
+
+Vec<2> nearestImage(Vec<2> r, double periodX, double periodY) {
+    r.x() -= periodX * std::round(r.x() / periodX);
+    r.y() -= periodY * std::round(r.y() / periodY);
+    return r;
+}
+
+}  // namespace
+
+TEST(ParticleShifting, NothingOnAUniformLattice) {
+    for (const ParticleShifting& shifting : {sun(), lind()}) {
+        auto s = system(lattice(20, 20), ParticleSet<2>("walls"), 20, shifting, false, true, 20 * dx);
+        const auto before = s->fluid.position;
+        s->shiftParticles(1e-4);
+        for (std::size_t i = 0; i < before.size(); ++i) {
+            EXPECT_LT(s->fluid.vector("shiftingVelocity")[i].norm(), 1e-11);
+            EXPECT_NEAR(s->fluid.scalar("freeSurfaceLambda")[i], 0.974, 0.001);  // a full support on the lattice, computed apart
+        }
+    }
+}
+
+TEST(ShiftingSun2017, DisplacedParticleAgainstTheSumWrittenOut) {
+    auto s = system(lattice(20, 20), ParticleSet<2>("walls"), 20, sun(), false, true, 20 * dx);
+    const std::size_t moved = 10 * 20 + 10;
+    const Vec<2> displacement(0.06 * dx, -0.03 * dx);
+    s->fluid.position[moved] += displacement;
+    s->fluid.vector("velocity")[3] = Vec<2>(1.5, 0.0);  // U_max 1.5
+    const auto x = s->fluid.position;
+    const double dt = 1e-4;
+    s->shiftParticles(dt);
+    // delta u = -4 h U_max sum_j [1 + 0.2 (W_ij / W(dx))^4] V_j grad_i W_ij
+    const WendlandC2<2> kernel(h);
+    Vec<2> sum = Vec<2>::Zero();
+    for (std::size_t j = 0; j < x.size(); ++j) {
+        const Vec<2> r = nearestImage(x[moved] - x[j], 20 * dx, 20 * dx);
+        const double distance = r.norm();
+        if (j == moved || distance >= 2.0 * h) continue;
+        sum += (1.0 + 0.2 * std::pow(kernel.value(distance) / kernel.value(dx), 4)) * dx * dx * kernel.gradientFactor(distance) * r;
+    }
+    const Vec<2> expected = -4.0 * h * 1.5 * sum;
+    const Vec<2> shift = s->fluid.vector("shiftingVelocity")[moved];
+    EXPECT_LT((shift - expected).norm(), 1e-12 * expected.norm());
+    EXPECT_LT(shift.dot(displacement), 0.0);  // back towards its place
+    EXPECT_LT(expected.norm(), 0.75);         // within the bound U_max / 2: the sum, not the bound, was compared
+    EXPECT_LT((s->fluid.position[moved] - (x[moved] + dt * expected)).norm(), 1e-15);
+}
+
+TEST(ParticleShifting, EvensOutARandomLattice) {
+    // The spread of the kernel sum sum_j V_j W_ij (1 on a lattice) over a disordered periodic
+    // lattice, before and after 200 shifts of dt = 0.2 h / c0 at U = 1.
+    for (const ParticleShifting& shifting : {sun(), lind()}) {
+        auto s = system(lattice(20, 20), ParticleSet<2>("walls"), 20, shifting, false, true, 20 * dx);
+        std::mt19937 random(3);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        for (Vec<2>& x : s->fluid.position) x += 0.2 * dx * Vec<2>(unit(random), unit(random));
+        const WendlandC2<2> kernel(h);
+        const auto spread = [&] {
+            double sum2 = 0.0;
+            const auto& x = s->fluid.position;
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                double sum = 0.0;
+                for (std::size_t j = 0; j < x.size(); ++j) sum += dx * dx * kernel.value(nearestImage(x[i] - x[j], 20 * dx, 20 * dx).norm());
+                sum2 += (sum - 1.0) * (sum - 1.0);
+            }
+            return std::sqrt(sum2 / static_cast<double>(x.size()));
+        };
+        const double before = spread();
+        for (int step = 0; step < 200; ++step) {
+            s->shiftParticles(0.2 * h / c0);
+            s->wrapPeriodic();
+        }
+        EXPECT_LT(spread(), 0.3 * before) << describe(shifting);
+    }
+}
+
+TEST(FreeSurfaceMarrone2010, FlatSurfaceDetectedAndNeverCrossed) {
+    // 12 rows on three layers of wall particles, the lattice jiggled along x: the top row is a
+    // free surface (lambda 0.487 on the lattice, computed apart), the rows within the support
+    // below it shift along it only; the wall particles complete the bottom rows' sums.
+    auto s = system(lattice(30, 12), floorOf(30, 3), 30, sun());
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (Vec<2>& x : s->fluid.position) x.x() += 0.1 * dx * unit(random);
+    s->shiftParticles(1e-4);
+    const auto& lambda = s->fluid.scalar("freeSurfaceLambda");
+    const auto& shift = s->fluid.vector("shiftingVelocity");
+    double largest = 0.0;
+    for (std::size_t i = 0; i < shift.size(); ++i) {
+        const int row = static_cast<int>(s->fluid.position[i].y() / dx);
+        if (row == 11) {
+            EXPECT_NEAR(lambda[i], 0.487, 0.05);  // 0.487 on the lattice; the jiggle moves it by up to 0.04
+        } else if (row <= 8) {
+            EXPECT_GT(lambda[i], 0.9) << "row " << row;
+        }
+        if (row >= 9) {
+            // Along the surface's normal as estimated from the jiggled top row: within 6 degrees of the vertical.
+            EXPECT_LT(std::abs(shift[i].y()), 0.1 * shift[i].norm() + 1e-14) << "row " << row;
+        }
+        largest = std::max(largest, shift[i].norm());
+    }
+    EXPECT_GT(largest, 1e-3);  // the rows were shifted
+}
+
+TEST(FreeSurfaceMarrone2010, OneLayerWallCompletesTheSumsAndIsNeverApproached) {
+    // On one row of wall particles (a wall-force patch), without its surface terms the bottom
+    // row's lambda would be about 1/2 (a free surface) and its concentration gradient would push
+    // it into the wall.
+    auto s = system(lattice(30, 12), floorOf(30, 1), 30, sun(), true);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (Vec<2>& x : s->fluid.position) x += 0.1 * dx * Vec<2>(unit(random), unit(random));
+    s->shiftParticles(1e-4);
+    const auto& lambda = s->fluid.scalar("freeSurfaceLambda");
+    const auto& shift = s->fluid.vector("shiftingVelocity");
+    for (std::size_t i = 0; i < shift.size(); ++i) {
+        if (s->fluid.position[i].y() > 2.0 * h) continue;
+        EXPECT_GT(lambda[i], 0.8);
+        EXPECT_GE(shift[i].y(), -1e-14);
+    }
+}
+
+TEST(ParticleShifting, ACaseWithoutItHasNoShiftingFields) {
+    auto s = system(lattice(20, 20), ParticleSet<2>("walls"), 20, ParticleShifting{NoShifting{}, {}, dx}, false, true, 20 * dx);
+    EXPECT_FALSE(s->shiftsParticles());
+    EXPECT_FALSE(s->fluid.hasVector("shiftingVelocity"));
+    EXPECT_FALSE(s->fluid.hasScalar("freeSurfaceLambda"));
+}
