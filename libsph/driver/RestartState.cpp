@@ -34,7 +34,9 @@ void restoreRestartState(FluidSystem<D>& system, TimeIntegrator<D>& integrator, 
     const auto saved = header.restart.find(integratorKey);
     integrator.resume(system, sameIntegrator && saved != header.restart.end() ? saved->second : std::vector<double>{});
 
-    const bool keepWrittenRates = sameIntegrator && integrator.carriesPredictedRates();
+    // The rates a step starts from were evaluated before the last step's particle shift: the
+    // uninterrupted run reads those, so the restart keeps them too.
+    const bool keepWrittenRates = sameIntegrator && (integrator.carriesPredictedRates() || system.shiftsParticles());
     std::vector<Vec<D>> acceleration;
     std::vector<std::vector<double>> densityRates;
     const auto densitySets = evolvedDensitySets(system);
