@@ -27,6 +27,7 @@
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
 #include "physics/CellOrderedFluid.hpp"
+#include "physics/ParticleShiftingScratch.hpp"
 #include "motion/PatchMotion.hpp"
 #include "particleShifting/ParticleShifting.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
@@ -146,6 +147,7 @@ private:
     CellLinkedList<D> fluidCells_;
     CellLinkedList<D> wallCells_;
     CellOrderedFluid<D> cellOrdered_;
+    ParticleShiftingScratch<D> shiftingScratch_;
 };
 
 }  // namespace sph

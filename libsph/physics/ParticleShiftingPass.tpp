@@ -1,6 +1,7 @@
 // FluidSystem<D>::shiftParticles, included by FluidSystem.tpp. Once a step, from the state at
 // its end:
-//   1. sums      one gather over each particle's neighbours, in cell order: the moment matrix
+//   1. sums      each fluid pair once (per-thread accumulators, as the force loop), then the
+//                walls gathered per particle: the moment matrix
 //                and concentration gradient of FreeSurfaceMarrone2010.hpp (lambda_i, n_i) and
 //                the law's sum (FickianShiftingLind2012.hpp, ShiftingSun2017.hpp), walls
 //                completing them
@@ -79,10 +80,20 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 const bool evolvesDensity = continuity();
                 double* density = fluid.scalar("density").data();
                 const auto& cells = fluidCells_;
-                std::vector<double> volume(cells.pointCount());
+                ParticleShiftingScratch<D>& scratch = shiftingScratch_;
+                scratch.volume.resize(cells.pointCount());
+                scratch.outward.resize(n);
+                scratch.law.resize(n);
+                scratch.densityGradient.resize(n);
+                scratch.surfaceNormal.assign(n, Vec<D>::Zero());
+                scratch.nearWall.assign(n, 0);
+                std::vector<double>& volume = scratch.volume;
+                std::vector<Vec<D>>& outward = scratch.outward;
+                std::vector<Vec<D>>& lawSum = scratch.law;
+                std::vector<Vec<D>>& surfaceNormal = scratch.surfaceNormal;
+                std::vector<Vec<D>>& densityGradient = scratch.densityGradient;
+                std::vector<char>& nearWall = scratch.nearWall;
                 double* lambda = fluid.scalar("freeSurfaceLambda").data();
-                std::vector<Vec<D>> outward(n), lawSum(n), surfaceNormal(n, Vec<D>::Zero()), densityGradient(n);
-                std::vector<char> nearWall(n, 0);
 #pragma omp parallel for schedule(static)
                 for (std::size_t j = 0; j < volume.size(); ++j) volume[j] = m[j] / rho[j];
                 // Every surface element of a one-layer wall near x (wall-force patches).
@@ -91,35 +102,87 @@ void FluidSystem<D>::shiftParticles(double dt) {
                         if (patch.cells)
                             patch.cells->forEachNeighbour(x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) { visit(w, r, r2); });
                 };
+                // Pass 1's sums, per thread and in cell order: each fluid pair is visited once and
+                // adds to both its particles, as the force loop does (CellOrderedFluid.hpp).
+                using Sums = typename ParticleShiftingScratch<D>::Sums;
+                const std::size_t places = cells.pointCount();
+                auto& sumsOfThread = scratch.sumsOfThread;
+                sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel
                 {
+                    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+                    std::vector<Sums>& mine = sumsOfThread[static_cast<std::size_t>(omp_get_thread_num())];
+                    mine.assign(places, Sums{});
+                    std::vector<std::uint32_t> neighbours(64);
+                    std::vector<double> unusedScratch;
                     auto stencilCell = std::numeric_limits<std::uint32_t>::max();
                     typename CellLinkedList<D>::StencilRanges stencil, wallStencil;
+                    const double* const xs = places > 0 ? cells.sortedPosition(0).data() : nullptr;
+                    const auto fluidPairs = [&](auto wraps) {
 #pragma omp for schedule(static, 256)
-                    for (std::size_t k = 0; k < cells.pointCount(); ++k) {
+                        for (std::size_t k = 0; k < places; ++k) {
+                            if (cells.cellAt(k) != stencilCell) {
+                                stencilCell = cells.cellAt(k);
+                                stencil = cells.stencilRanges(cells.sortedPosition(k));
+                            }
+                            std::array<double, D> xk;
+                            for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
+                            const std::size_t i = cells.sortedIndex(k);
+                            const std::size_t count =
+                                cells.template listWithin<1, decltype(wraps)::value>(stencil, xk, radius * radius, k + 1, neighbours, unusedScratch);
+                            Sums& atK = mine[k];
+                            for (std::size_t q = 0; q < count; ++q) {
+                                const std::size_t l = neighbours[q], j = cells.sortedIndex(l);
+                                Vec<D> r;
+                                for (int d = 0; d < D; ++d) r[d] = cells.template separation<decltype(wraps)::value>(xk[d] - xs[l * D + d], d);
+                                const double distance = r.norm();
+                                const Vec<D> Fr = kernel.gradientFactor(distance) * r;
+                                const double weight = law.pairWeight(kernel.value(distance) * inverseWdx), densityDifference = rho[j] - rho[i];
+                                const Matrix outer = Fr * r.transpose();
+                                Sums& atL = mine[l];
+                                atK.moment.noalias() -= volume[j] * outer;
+                                atL.moment.noalias() -= volume[i] * outer;
+                                atK.gradient += volume[j] * Fr;
+                                atL.gradient -= volume[i] * Fr;
+                                atK.law += (weight * volume[j]) * Fr;
+                                atL.law -= (weight * volume[i]) * Fr;
+                                atK.densityDifferences += (densityDifference * volume[j]) * Fr;
+                                atL.densityDifferences += (densityDifference * volume[i]) * Fr;
+                            }
+                        }  // implicit barrier: every pair is in
+                    };
+                    if (cells.anyPeriodic()) fluidPairs(std::true_type{});
+                    else fluidPairs(std::false_type{});
+                    stencilCell = std::numeric_limits<std::uint32_t>::max();
+#pragma omp for schedule(static, 256)
+                    for (std::size_t k = 0; k < places; ++k) {
                         const std::size_t i = cells.sortedIndex(k);
                         if (i >= n) continue;
-                        if (cells.cellAt(k) != stencilCell) {  // the particles of a cell share their stencils
+                        if (cells.cellAt(k) != stencilCell) {  // the wall list has the fluid list's grid
                             stencilCell = cells.cellAt(k);
-                            stencil = cells.stencilRanges(cells.sortedPosition(k));
                             wallStencil = wallCells_.anyPointNear(stencilCell) ? wallCells_.stencilRanges(cells.sortedPosition(k))
                                                                              : typename CellLinkedList<D>::StencilRanges{};
                         }
-                        Matrix moment = Matrix::Zero();
-                        Vec<D> gradient = Vec<D>::Zero(), sum = Vec<D>::Zero(), densityDifferences = Vec<D>::Zero();
-                        const auto addVolume = [&](double V, double density, const Vec<D>& r, double r2) {
-                            const double distance = std::sqrt(r2);
-                            const double VF = V * kernel.gradientFactor(distance);
-                            moment.noalias() -= (VF * r) * r.transpose();
-                            gradient += VF * r;
-                            sum += (law.pairWeight(kernel.value(distance) * inverseWdx) * VF) * r;
-                            densityDifferences += ((density - rho[i]) * VF) * r;
-                        };
+                        Sums total;
+                        for (std::size_t t = 0; t < team; ++t) {
+                            const Sums& part = sumsOfThread[t][k];
+                            total.moment += part.moment;
+                            total.gradient += part.gradient;
+                            total.law += part.law;
+                            total.densityDifferences += part.densityDifferences;
+                        }
+                        Matrix& moment = total.moment;
+                        Vec<D>& gradient = total.gradient;
+                        Vec<D>& sum = total.law;
+                        Vec<D>& densityDifferences = total.densityDifferences;
                         const Vec<D>& x = fluid.position[i];
-                        cells.forEachNeighbour(stencil, x, radius,
-                                               [&](std::uint32_t j, const Vec<D>& r, double r2) { addVolume(volume[j], rho[j], r, r2); });
                         wallCells_.forEachNeighbour(wallStencil, x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
-                            addVolume(wallMass[w] / wallDensity[w], wallDensity[w], r, r2);
+                            const double distance = std::sqrt(r2), V = wallMass[w] / wallDensity[w];
+                            const Vec<D> VFr = (V * kernel.gradientFactor(distance)) * r;
+                            moment.noalias() -= VFr * r.transpose();
+                            gradient += VFr;
+                            sum += law.pairWeight(kernel.value(distance) * inverseWdx) * VFr;
+                            densityDifferences += (wallDensity[w] - rho[i]) * VFr;
                             nearWall[i] = 1;
                         });
                         // Renormalised by the particles' own moment (exact for a linear field whatever the support holds).
