@@ -67,7 +67,6 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 const double radius = supportRadius_;
                 const double inverseWdx = 1.0 / kernel.value(models_.shifting.dx);
                 const FreeSurfaceMarrone2010 surface = models_.shifting.surface;
-                const KernelOutsideFraction<D> outsideFraction(kernel);
                 const double* m = fluid.scalar("mass").data();
                 const double* rho = fluid.scalar("density").data();
                 const bool anyWalls = walls.size() > 0;
@@ -76,11 +75,13 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 const Vec<D>* wallNormal = anyWalls ? walls.vector("normal").data() : nullptr;
                 const double* wallArea = anyWalls && walls.hasScalar("area") ? walls.scalar("area").data() : nullptr;
                 const bool oneLayerWalls = wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
+                ParticleShiftingScratch<D>& scratch = shiftingScratch_;
+                // Its table depends on the kernel alone: built at the first step that needs it.
+                if (oneLayerWalls && !scratch.outsideFraction) scratch.outsideFraction.emplace(kernel);
                 Vec<D>* shift = fluid.vector("shiftingVelocity").data();
                 const bool evolvesDensity = continuity();
                 double* density = fluid.scalar("density").data();
                 const auto& cells = fluidCells_;
-                ParticleShiftingScratch<D>& scratch = shiftingScratch_;
                 scratch.volume.resize(cells.pointCount());
                 scratch.outward.resize(n);
                 scratch.law.resize(n);
@@ -192,7 +193,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
                             forEachWallElement(x, [&](std::uint32_t w, const Vec<D>& r, double r2) {
                                 const double distance = std::sqrt(r2);
                                 const double AW = wallArea[w] * kernel.value(distance);
-                                behindWall += outsideFraction.element(distance, r.dot(wallNormal[w]), wallArea[w]);
+                                behindWall += scratch.outsideFraction->element(distance, r.dot(wallNormal[w]), wallArea[w]);
                                 moment.noalias() += (AW * r) * wallNormal[w].transpose();
                                 gradient -= AW * wallNormal[w];
                                 sum -= AW * wallNormal[w];
@@ -201,9 +202,11 @@ void FluidSystem<D>::shiftParticles(double dt) {
                             moment += behindWall * Matrix::Identity();
                         }
                         lambda[i] = smallestEigenvalue<D>(0.5 * (moment + moment.transpose()));
-                        const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
-                        const double length = inward.norm();
-                        outward[i] = length > 1e-12 ? Vec<D>(-inward / length) : Vec<D>::Zero();
+                        outward[i] = Vec<D>::Zero();  // read only at free-surface particles
+                        if (lambda[i] < surface.surfaceLambda) {
+                            const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
+                            if (const double length = inward.norm(); length > 1e-12) outward[i] = -inward / length;
+                        }
                         lawSum[i] = sum;
                     }
                 }

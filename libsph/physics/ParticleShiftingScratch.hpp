@@ -4,9 +4,11 @@
 #pragma once
 
 #include "core/Vector.hpp"
+#include "kernels/KernelOutsideFraction.hpp"
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace sph {
@@ -23,6 +25,7 @@ struct ParticleShiftingScratch {
     std::vector<double> volume;
     std::vector<Vec<D>> outward, law, surfaceNormal, densityGradient;
     std::vector<char> nearWall;
+    std::optional<KernelOutsideFraction<D>> outsideFraction;  // one-layer walls only
 };
 
 }  // namespace sph
