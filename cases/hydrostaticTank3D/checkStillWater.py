@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""What still water in a 3D box should show, for hydrostaticTank3D and its variants, at the
-last written time: the kinetic energy per unit mass over g H (fieldTotals), the near-floor
-pressure error (RMS of p - rho0 g (H - z) over rho0 g H, fluid within 2h of the floor), the
-mean floor gap (the lowest particle of each dx x dx column, over dx; 0.5 where the fluid
-started) and its spread, the centre-line pressure error (lineSample, L2 over rho0 g H) and
-the most fluid particles behind the wall at any step (wallPenetrations). Spacing, depth,
-smoothing length, rho0 and g are read from the case's dictionaries. Writes
-stillWaterComparison.csv into the first case given and prints one row per case.
+"""What still water in a 3D tank should show, for hydrostaticTank3D, cylinderTank3D and their
+variants, at the last written time: the kinetic energy per unit mass over g H (fieldTotals),
+the near-floor pressure error (RMS of p - rho0 g (H - z) over rho0 g H, fluid within 2h of the
+floor), the mean floor gap (the lowest particle of each dx x dx column, over dx; 0.5 where the
+fluid started) and its spread, the centre-line pressure error (lineSample, L2 over rho0 g H)
+and the most fluid particles behind the wall at any step (wallPenetrations). Spacing, depth
+(the lineSample's freeSurfaceHeight), smoothing length, rho0 and g are read from the case's
+dictionaries. Writes stillWaterComparison.csv into the first case given and prints one row
+per case.
 Usage: checkStillWater.py [case ...]
 """
 import csv
@@ -34,7 +35,7 @@ def last_rows(path):
 
 def check(case):
     dx, = number(case, "system/generateParticlesDict", r"spacing\s+([0-9.eE+-]+);")
-    depth, = number(case, "system/generateParticlesDict", r"water\s*\{[^}]*max \([^ ]+ [^ ]+ ([0-9.eE+-]+)\)")
+    depth, = number(case, "system/controlDict", r"freeSurfaceHeight\s+([0-9.eE+-]+);")
     hdx, = number(case, "system/sphSchemes", r"hdx\s+([0-9.eE+-]+);")
     rho0, = number(case, "constant/fluidProperties", r"rho0\s+([0-9.eE+-]+);")
     g, = number(case, "constant/fluidProperties", r"gravity\s+\(\S+ \S+ -?([0-9.eE+-]+)\);")

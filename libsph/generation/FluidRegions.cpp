@@ -1,6 +1,7 @@
 #include "generation/FluidRegions.hpp"
 
 #include "core/MemoryBudget.hpp"
+#include "generation/SurfaceShapes.hpp"
 #include "io/SelectByType.hpp"
 
 #include <fmt/format.h>
@@ -11,30 +12,37 @@
 
 namespace sph {
 
-int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx) {
+LatticeAxis latticeAxis(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx) {
     const double cells = (hi - lo) / dx;
     const double whole = std::round(cells);
-    if (!(whole >= 1.0) || std::abs(cells - whole) > 1e-6 * std::max(1.0, whole))
-        dict.fail(keyword, fmt::format("the extent {:g} (from {:g} to {:g}) must be a positive whole number of spacings dx = {:g} (it is {:g} dx)",
-                                       hi - lo, lo, hi, dx, cells));
+    if (!(whole >= 1.0))
+        dict.fail(keyword, fmt::format("the extent {:g} (from {:g} to {:g}) must be at least half a spacing dx = {:g} (it is {:g} dx)", hi - lo, lo,
+                                       hi, dx, cells));
     if (whole > maxSpacingsAcross)
         dict.fail(keyword, fmt::format("the extent {:g} is {:.3g} spacings dx = {:g} (at most {}): is the spacing a slip?", hi - lo, whole, dx,
                                        maxSpacingsAcross));
-    return static_cast<int>(whole);
+    return {lo, hi, dx, static_cast<int>(whole), std::abs(cells - whole) <= 1e-6 * std::max(1.0, whole)};
+}
+
+std::string LatticeAxis::note(int axis) const {
+    if (whole) return "";
+    const double last = count == 1 ? 0.0 : (hi - lo) / dx - (count - 1);
+    return count == 1 ? fmt::format("the {} extent {:g} is {:g} dx: one particle, in its middle", "xyz"[axis], hi - lo, (hi - lo) / dx)
+                      : fmt::format("the {} extent {:g} is {:g} dx: the last spacing is {:.3g} dx", "xyz"[axis], hi - lo, (hi - lo) / dx, last);
 }
 
 namespace {
 
 template <int D>
-void forEachLatticePoint(const Vec<D>& origin, const std::array<int, D>& counts, double dx, const std::function<void(const Vec<D>&)>& visit) {
+void forEachLatticePoint(const std::array<LatticeAxis, D>& axes, const std::function<void(const Vec<D>&)>& visit) {
     std::array<int, D> index{};
     while (true) {
         Vec<D> x;
-        for (int d = 0; d < D; ++d) x[d] = origin[d] + (index[static_cast<std::size_t>(d)] + 0.5) * dx;
+        for (int d = 0; d < D; ++d) x[d] = axes[static_cast<std::size_t>(d)](index[static_cast<std::size_t>(d)]);
         visit(x);
         int d = 0;
         for (; d < D; ++d) {
-            if (++index[static_cast<std::size_t>(d)] < counts[static_cast<std::size_t>(d)]) break;
+            if (++index[static_cast<std::size_t>(d)] < axes[static_cast<std::size_t>(d)].count) break;
             index[static_cast<std::size_t>(d)] = 0;
         }
         if (d == D) return;
@@ -42,25 +50,31 @@ void forEachLatticePoint(const Vec<D>& origin, const std::array<int, D>& counts,
 }
 
 template <int D>
-std::vector<Vec<D>> fillBox(const Dictionary& region, double dx) {
+std::vector<Vec<D>> fillBox(const Dictionary& region, double dx, std::vector<std::string>& notes) {
     const Vec<D> lo = region.getVector<D>("min"), hi = region.getVector<D>("max");
-    std::array<int, D> counts;
+    std::array<LatticeAxis, D> axes;
     double particles = 1.0;
-    for (int d = 0; d < D; ++d) particles *= counts[static_cast<std::size_t>(d)] = wholeSpacings(region, "max", lo[d], hi[d], dx);
+    for (int d = 0; d < D; ++d) {
+        const auto dd = static_cast<std::size_t>(d);
+        axes[dd] = latticeAxis(region, "max", lo[d], hi[d], dx);
+        particles *= axes[dd].count;
+        if (const std::string note = axes[dd].note(d); !note.empty()) notes.push_back(note);
+    }
     requireMemory(particles * solverBytesPerParticle,
                   fmt::format("{}: the fluid box of {:.3g} particles at spacing {:g}", region.where().str(), particles, dx));
     std::vector<Vec<D>> points;
-    forEachLatticePoint<D>(lo, counts, dx, [&](const Vec<D>& x) { points.push_back(x); });
+    forEachLatticePoint<D>(axes, [&](const Vec<D>& x) { points.push_back(x); });
     return points;
 }
 
 // Lattice points of the whole domain for which `inside` holds.
 template <int D>
 std::vector<Vec<D>> fillShape(double dx, const Vec<D>& domainMin, const Vec<D>& domainMax, const std::function<bool(const Vec<D>&)>& inside) {
-    std::array<int, D> counts;  // the domain's spacings, checked by the generator to fit an int
-    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = static_cast<int>(std::floor((domainMax[d] - domainMin[d]) / dx));
+    std::array<LatticeAxis, D> axes;  // the domain's spacings, checked by the generator to fit an int
+    for (int d = 0; d < D; ++d)
+        axes[static_cast<std::size_t>(d)] = {domainMin[d], domainMax[d], dx, static_cast<int>(std::floor((domainMax[d] - domainMin[d]) / dx)), true};
     std::vector<Vec<D>> points;
-    forEachLatticePoint<D>(domainMin, counts, dx, [&](const Vec<D>& x) {
+    forEachLatticePoint<D>(axes, [&](const Vec<D>& x) {
         if (inside(x)) points.push_back(x);
     });
     return points;
@@ -89,7 +103,7 @@ bool insidePolygon(const std::vector<Vec<2>>& polygon, const Vec<2>& x) {
 }  // namespace
 
 template <int D>
-FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax) {
+FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const GenerationDomain<D>& domain) {
     const std::string type = region.get<std::string>("type");
     FluidRegionParticles<D> result;
     if (const Dictionary* field = region.findSubDict("velocity"))
@@ -97,14 +111,14 @@ FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, con
     else if (region.found("velocity"))
         result.velocity = region.getVector<D>("velocity");
     if (type == "box") {
-        result.positions = fillBox<D>(region, dx);
+        result.positions = fillBox<D>(region, dx, result.notes);
         return result;
     }
     if constexpr (D == 2) {
         if (type == "ellipse" || type == "circle") {
             const Vec<2> centre = region.getVector<2>("centre");
             const Vec<2> axes = semiAxesOf(region);
-            result.positions = fillShape<2>(dx, domainMin, domainMax, [&](const Vec<2>& x) {
+            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) {
                 return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
             });
             return result;
@@ -112,17 +126,23 @@ FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, con
         if (type == "polygon") {
             const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
             if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
-            result.positions = fillShape<2>(dx, domainMin, domainMax, [&](const Vec<2>& x) { return insidePolygon(polygon, x); });
+            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insidePolygon(polygon, x); });
             return result;
         }
     }
-    const std::string valid = D == 2 ? "box, circle, ellipse, polygon" : "box";
+    if constexpr (D == 3) {
+        if (type == "surface") {
+            result.positions = fillSurface(region, dx, domain.caseDirectory, domain.min, domain.max);
+            return result;
+        }
+    }
+    const std::string valid = D == 2 ? "box, circle, ellipse, polygon" : D == 3 ? "box, surface" : "box";
     throw FatalError(region.entry("type").tokens().front().where,
                      fmt::format("unknown fluid region type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }
 
-template FluidRegionParticles<1> fillFluidRegion<1>(const Dictionary&, double, const Vec<1>&, const Vec<1>&);
-template FluidRegionParticles<2> fillFluidRegion<2>(const Dictionary&, double, const Vec<2>&, const Vec<2>&);
-template FluidRegionParticles<3> fillFluidRegion<3>(const Dictionary&, double, const Vec<3>&, const Vec<3>&);
+template FluidRegionParticles<1> fillFluidRegion<1>(const Dictionary&, double, const GenerationDomain<1>&);
+template FluidRegionParticles<2> fillFluidRegion<2>(const Dictionary&, double, const GenerationDomain<2>&);
+template FluidRegionParticles<3> fillFluidRegion<3>(const Dictionary&, double, const GenerationDomain<3>&);
 
 }  // namespace sph

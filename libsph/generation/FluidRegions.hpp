@@ -7,15 +7,20 @@
 //       drop   { type ellipse; centre (0 0); semiAxes (1 1); }          // 2D (circle: radius 1;)
 //       wedge  { type polygon; points ((0 0) (1 0) (0 1)); }           // 2D
 //   }
-// A box's extent must be a whole number of spacings; other shapes keep the lattice points
-// (anchored at the domain's min corner) that fall inside them.
+// A box spans the whole number of spacings nearest its extent along each axis, its lattice
+// anchored at min; where the extent is not a whole number of spacings, the last particle sits
+// dx/2 inside max and the last spacing takes the difference (between dx/2 and 3 dx/2; a note
+// says so). Other shapes keep the lattice points (anchored at the domain's min corner) that
+// fall inside them.
 #pragma once
 
 #include "analytic/AnalyticSolution.hpp"
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
+#include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace sph {
@@ -25,10 +30,19 @@ struct FluidRegionParticles {
     std::vector<Vec<D>> positions;
     Vec<D> velocity = Vec<D>::Zero();                          // a constant velocity, or
     std::shared_ptr<const AnalyticSolution<D>> initialField;  // the velocity (and pressure) of a solution at t = 0
+    std::vector<std::string> notes;                           // adjusted spacings, for the user to read
+};
+
+// What a shape is generated within: the domain (its lattice is anchored at min) and the case
+// directory, which file names are relative to.
+template <int D>
+struct GenerationDomain {
+    Vec<D> min, max;
+    std::filesystem::path caseDirectory;
 };
 
 template <int D>
-FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const Vec<D>& domainMin, const Vec<D>& domainMax);
+FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const GenerationDomain<D>& domain);
 
 // What a particle costs the solver (its fields, the integrator's stages, its share of the
 // neighbour search): an estimate, high rather than low, to refuse a runaway size before allocating.
@@ -36,7 +50,32 @@ constexpr double solverBytesPerParticle = 1024.0;
 // Lattice indices are ints: no extent may span more spacings.
 constexpr int maxSpacingsAcross = 2147483647;
 
-// Number of whole spacings in [lo, hi]; FatalError naming the keyword when it is not whole.
-int wholeSpacings(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
+// The lattice along one axis of a box [lo, hi]: `count` points, the whole number of spacings
+// nearest (hi - lo) / dx, at lo + (i + 1/2) dx; when the extent is not whole, the last sits
+// dx/2 inside hi (at the middle when it is the only one), and points beyond the box (walls'
+// layers, i < 0 or i >= count) continue the lattice outwards from the nearer end.
+struct LatticeAxis {
+    double lo, hi, dx;
+    int count;
+    bool whole;  // the extent is a whole number of spacings (to 1e-6): the plain lattice
+
+    double operator()(int i) const {
+        if (whole || i < count - 1) return lo + (i + 0.5) * dx;
+        if (i == count - 1) return count == 1 ? 0.5 * (lo + hi) : hi - 0.5 * dx;
+        return hi + (i - count + 0.5) * dx;
+    }
+    // The length of the box along this axis that point i (0 <= i < count) stands for.
+    double extent(int i) const {
+        if (whole) return dx;
+        if (count == 1) return hi - lo;
+        return i >= count - 2 ? 0.5 * (dx + (hi - lo) - (count - 1) * dx) : dx;
+    }
+    // "the x extent 0.41 is 20.5 dx: the last spacing is 1.5 dx", or empty when whole.
+    std::string note(int axis) const;
+};
+
+// The lattice along [lo, hi]; FatalError naming the keyword when the extent is under half a
+// spacing or more spacings than an int holds.
+LatticeAxis latticeAxis(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
 
 }  // namespace sph

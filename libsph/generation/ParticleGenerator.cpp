@@ -112,10 +112,11 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
     const double rho0 = properties.rho0;
     const double volume = std::pow(dx, D);
+    const GenerationDomain<D> shapeDomain{lo, hi, caseDirectory};
 
     // Walls first: fluid particles overlapping them are dropped.
     ParticleSet<D> walls("walls");
-    std::vector<std::string> patchNames;
+    std::vector<std::string> patchNames, notes;
     const Dictionary* boundaries = dict.findSubDict("boundaries");
     WallPatchParticles<D> allWalls;
     std::vector<int> patchOf;
@@ -123,7 +124,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     if (boundaries) {
         for (const std::string& name : boundaries->keywords()) {
             const Dictionary& patch = boundaries->subDict(name);
-            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx);
+            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx, shapeDomain);
+            for (const std::string& note : generated.notes) notes.push_back(fmt::format("wall patch '{}': {}", name, note));
             for (std::size_t k = 0; k < generated.positions.size(); ++k) {
                 if (!insideDomain<D>(generated.positions[k], lo, hi))
                     throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
@@ -149,7 +151,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const Dictionary& fluid = dict.subDict("fluid");
     for (const std::string& name : fluid.keywords()) {
         const Dictionary& region = fluid.subDict(name);
-        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, dx, lo, hi);
+        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, dx, shapeDomain);
+        for (const std::string& note : filled.notes) notes.push_back(fmt::format("fluid region '{}': {}", name, note));
         double top = -std::numeric_limits<double>::infinity();
         std::size_t first = fluidPositions.size();
         for (const Vec<D>& x : filled.positions) {
@@ -238,7 +241,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     wallHeader.patchNames = patchNames;
     writeParticleFile(outputDirectory / "walls.vtu", walls, wallHeader);
     writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
-    return {D, fluidSet.size(), walls.size(), dropped, warnings};
+    return {D, fluidSet.size(), walls.size(), dropped, warnings, notes};
 }
 
 }  // namespace

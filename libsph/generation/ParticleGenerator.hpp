@@ -25,6 +25,7 @@ struct GenerationSummary {
     std::size_t wallParticles = 0;
     std::size_t droppedFluidParticles = 0;
     std::vector<std::string> warnings;  // what may be a mistake but can be meant (printed by generateParticles)
+    std::vector<std::string> notes;     // what the generator adjusted (a box's last spacing)
 };
 
 // Writes <case>/0/; refuses to replace an existing 0/fluid.vtu unless `overwrite`, which also

@@ -1,6 +1,7 @@
 #include "generation/WallPatches.hpp"
 
 #include "generation/FluidRegions.hpp"
+#include "generation/SurfaceShapes.hpp"
 
 #include <fmt/format.h>
 
@@ -16,10 +17,20 @@ namespace {
 constexpr const char* faceNames[3][2] = {{"xMin", "xMax"}, {"yMin", "yMax"}, {"zMin", "zMax"}};
 
 template <int D>
+std::array<LatticeAxis, D> boxAxes(const Dictionary& patch, const Vec<D>& lo, const Vec<D>& hi, double dx, std::vector<std::string>& notes) {
+    std::array<LatticeAxis, D> axes;
+    for (int d = 0; d < D; ++d) {
+        axes[static_cast<std::size_t>(d)] = latticeAxis(patch, "max", lo[d], hi[d], dx);
+        if (const std::string note = axes[static_cast<std::size_t>(d)].note(d); !note.empty()) notes.push_back(note);
+    }
+    return axes;
+}
+
+template <int D>
 WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, double offset) {
     const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
-    std::array<int, D> counts;
-    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(patch, "max", lo[d], hi[d], dx);
+    WallPatchParticles<D> walls;
+    const std::array<LatticeAxis, D> axes = boxAxes<D>(patch, lo, hi, dx, walls.notes);
     std::array<std::array<bool, 2>, D> open{};
     if (patch.found("open")) {
         for (const std::string& face : patch.get<std::vector<std::string>>("open")) {
@@ -34,24 +45,26 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
             }
         }
     }
-    WallPatchParticles<D> walls;
     std::array<int, D> index;
     for (int d = 0; d < D; ++d) index[static_cast<std::size_t>(d)] = -layers;
     while (true) {
         int depth = 0;
         bool skip = false;
+        double faceArea = 1.0;  // the face's area a face particle stands for
         Vec<D> x, nearest;
         for (int d = 0; d < D; ++d) {
             const auto dd = static_cast<std::size_t>(d);
             const int i = index[dd];
-            x[d] = lo[d] + (i + 0.5) * dx;
+            x[d] = axes[dd](i);
             nearest[d] = std::clamp(x[d], lo[d], hi[d]);
             if (i < 0) {
                 depth = std::max(depth, -i);
                 skip = skip || open[dd][0];
-            } else if (i >= counts[dd]) {
-                depth = std::max(depth, i - counts[dd] + 1);
+            } else if (i >= axes[dd].count) {
+                depth = std::max(depth, i - axes[dd].count + 1);
                 skip = skip || open[dd][1];
+            } else {
+                faceArea *= axes[dd].extent(i);
             }
         }
         if (depth > 0 && !skip) {
@@ -65,12 +78,12 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
                     shift[d] = std::copysign((0.5 - offset) * dx, outside[d]);
                     ++outsideAxes;
                 }
-            walls.add(x + shift, outside.normalized(), dx, depth - 1, outsideAxes == 1 ? std::pow(dx, D - 1) : 0.0);
+            walls.add(x + shift, outside.normalized(), dx, depth - 1, outsideAxes == 1 ? faceArea : 0.0);
         }
         int d = 0;
         for (; d < D; ++d) {
             const auto dd = static_cast<std::size_t>(d);
-            if (++index[dd] < counts[dd] + layers) break;
+            if (++index[dd] < axes[dd].count + layers) break;
             index[dd] = -layers;
         }
         if (d == D) break;
@@ -83,23 +96,22 @@ WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, d
 template <int D>
 WallPatchParticles<D> boxObstacle(const Dictionary& patch, double dx, int layers, double offset) {
     const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
-    std::array<int, D> counts;
-    for (int d = 0; d < D; ++d) counts[static_cast<std::size_t>(d)] = wholeSpacings(patch, "max", lo[d], hi[d], dx);
     WallPatchParticles<D> walls;
+    const std::array<LatticeAxis, D> axes = boxAxes<D>(patch, lo, hi, dx, walls.notes);
     std::array<int, D> index{};
     while (true) {
         int depth = std::numeric_limits<int>::max();
         for (int d = 0; d < D; ++d) {
             const auto dd = static_cast<std::size_t>(d);
-            depth = std::min({depth, index[dd], counts[dd] - 1 - index[dd]});
+            depth = std::min({depth, index[dd], axes[dd].count - 1 - index[dd]});
         }
         if (depth < layers) {
             Vec<D> x, normal = Vec<D>::Zero();
             for (int d = 0; d < D; ++d) {
                 const auto dd = static_cast<std::size_t>(d);
-                x[d] = lo[d] + (index[dd] + 0.5) * dx;
+                x[d] = axes[dd](index[dd]);
                 if (index[dd] == depth) normal[d] -= 1.0;
-                if (counts[dd] - 1 - index[dd] == depth) normal[d] += 1.0;
+                if (axes[dd].count - 1 - index[dd] == depth) normal[d] += 1.0;
             }
             if (normal.squaredNorm() == 0.0) normal[0] = 1.0;  // a box one particle thick: any face
             normal.normalize();
@@ -109,7 +121,7 @@ WallPatchParticles<D> boxObstacle(const Dictionary& patch, double dx, int layers
         int d = 0;
         for (; d < D; ++d) {
             const auto dd = static_cast<std::size_t>(d);
-            if (++index[dd] < counts[dd]) break;
+            if (++index[dd] < axes[dd].count) break;
             index[dd] = 0;
         }
         if (d == D) break;
@@ -222,12 +234,14 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
 }  // namespace
 
 template <int D>
-WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const GenerationDomain<D>& domain) {
     const std::string type = patch.get<std::string>("type");
     const int layers = patch.get<int>("layers");
     // A kernel support needs a few layers; thousands would be a slip that fills the memory.
     constexpr int maxLayers = 1000;
     if (layers < 1 || layers > maxLayers) patch.fail("layers", fmt::format("must be from 1 to {}, found {}", maxLayers, layers));
+    if constexpr (D == 3)
+        if (type == "surface") return surfaceWalls(patch, dx, layers, domain.caseDirectory, domain.min, domain.max);
     const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
     if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
     if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);
@@ -236,13 +250,13 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx) {
         if (type == "polygon") return polygon(patch, dx, layers, offset);
         if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
     }
-    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline" : "box, boxWalls";
+    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline" : D == 3 ? "box, boxWalls, surface" : "box, boxWalls";
     throw FatalError(patch.entry("type").tokens().front().where,
                      fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }
 
-template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double);
-template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double);
-template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double);
+template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double, const GenerationDomain<1>&);
+template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double, const GenerationDomain<2>&);
+template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double, const GenerationDomain<3>&);
 
 }  // namespace sph

@@ -11,6 +11,10 @@
 //       cylinder { type circle; centre (0.5 0.5); radius 0.1; layers 3; fluidInside no; }  // 2D
 //       bowl     { type ellipse; centre (0 0); semiAxes (2 1); layers 3; fluidInside yes; } // 2D
 //   }
+// box and boxWalls take any extent: along an axis that is not a whole number of spacings the
+// last spacing inside the box is adjusted (FluidRegions.hpp), and the lattice continues
+// outwards from the nearer end, so the layers lie at the same distances from every face (the
+// face particles next to the adjusted spacing stand for the length of wall they cover).
 // boxWalls fills the shell around the box with the lattice continued outwards, corners
 // included; the normal points to the nearest point of the box (diagonal in corners); a
 // firstLayerOffset other than 1/2 moves every particle by (1/2 - offset) dx towards the box
@@ -27,10 +31,12 @@
 #pragma once
 
 #include "core/Vector.hpp"
+#include "generation/FluidRegions.hpp"
 #include "io/Dictionary.hpp"
 
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace sph {
@@ -44,6 +50,7 @@ struct WallPatchParticles {
     std::vector<double> areas;  // the length (2D) or area (3D) of wall each particle stands for
     // For an obstacle (a closed curve with the fluid outside): true inside it, where no fluid goes.
     std::function<bool(const Vec<D>&)> solid;
+    std::vector<std::string> notes;  // adjusted spacings, for the user to read
 
     void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer, double area) {
         positions.push_back(x);
@@ -57,6 +64,6 @@ struct WallPatchParticles {
 };
 
 template <int D>
-WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx);
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const GenerationDomain<D>& domain);
 
 }  // namespace sph

@@ -2,9 +2,9 @@
 
 #include "core/FatalError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/VtkErrors.hpp"
 #include "io/VtuLayout.hpp"
 
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
@@ -33,22 +33,7 @@ vtkSmartPointer<Array> fieldArray(const std::string& name, const std::vector<dou
     return array;
 }
 
-// Collects VTK's error messages instead of letting it print them.
-struct VtkErrors {
-    std::string text;
-    vtkSmartPointer<vtkCallbackCommand> callback = vtkSmartPointer<vtkCallbackCommand>::New();
-    VtkErrors() {
-        callback->SetClientData(this);
-        callback->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
-            auto* errors = static_cast<VtkErrors*>(self);
-            if (errors->text.empty() && message) errors->text = static_cast<const char*>(message);
-        });
-    }
-};
-
 constexpr std::string_view restartPrefix = "restart:";
-
-std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::filesystem::path& file) {
     std::error_code ec;
@@ -65,7 +50,7 @@ vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::filesystem::path& file)
     reader->Update();
     if (!errors.text.empty() || reader->GetErrorCode() != 0 || !reader->GetOutput())
         throw FatalError("error: particle file '" + file.string() + "' is not a readable VTK unstructured grid" +
-                         (errors.text.empty() ? std::string() : ": " + firstLine(errors.text)));
+                         (errors.text.empty() ? std::string() : ": " + errors.firstLine()));
     return reader->GetOutput();
 }
 
@@ -185,7 +170,7 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
         writer->EncodeAppendedDataOff();
         writer->SetCompressorTypeToZLib();
         if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || !errors.text.empty())
-            throw FatalError("error: cannot write particle file '" + file.string() + "'" + (errors.text.empty() ? "" : ": " + firstLine(errors.text)));
+            throw FatalError("error: cannot write particle file '" + file.string() + "'" + (errors.text.empty() ? "" : ": " + errors.firstLine()));
     });
 }
 

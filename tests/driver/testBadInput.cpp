@@ -292,11 +292,11 @@ TEST(BadInput, SpeedOfSoundMissing) {
                                    "'c0FromHeight { coefficient 10; height <H>; }'");
 }
 
-TEST(BadInput, BoxNotAWholeNumberOfSpacings) {
+TEST(BadInput, BoxUnderHalfASpacing) {
     const auto dir = copyCase("damBreak2D");
-    replaceInFile(dir / "system/generateParticlesDict", "max (0.40005 0.17145)", "max (0.4 0.17145)");
-    expectContains(failureOf(dir), "error: keyword 'max' in dictionary 'generateParticlesDict/boundaries/tank': the extent 0.4 (from 0 to 0.4) must be a "
-                                   "positive whole number of spacings dx = 0.00142875");
+    replaceInFile(dir / "system/generateParticlesDict", "max (0.40005 0.17145)", "max (0.0005 0.17145)");
+    expectContains(failureOf(dir), "error: keyword 'max' in dictionary 'generateParticlesDict/boundaries/tank': the extent 0.0005 (from 0 to 0.0005) must be "
+                                   "at least half a spacing dx = 0.00142875");
 }
 
 TEST(BadInput, ExistingInitialStateIsNotOverwrittenByDefault) {

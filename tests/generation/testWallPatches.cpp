@@ -1,15 +1,25 @@
 // Wall patch generation: the box obstacle's particles, layers, normals and solid inside.
 #include "generation/WallPatches.hpp"
 
+#include "generation/CubeSurface.hpp"
+
+#include <fmt/format.h>
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace sph;
+
+// A domain around every patch here.
+template <int D>
+const GenerationDomain<D> anywhere{Vec<D>::Constant(-10.0), Vec<D>::Constant(10.0), ""};
 
 TEST(WallPatches, BoxObstacleIsItsLatticeLayersDeepWithNormalsOutOfTheNearestFace) {
     // A 10 x 6 dx block, 2 layers: everything but the 6 x 2 core (hand count 60 - 12 = 48).
     const double dx = 0.1;
     const Dictionary patch = Dictionary::fromString("type box; min (1 0); max (2 0.6); layers 2;", "block");
-    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, dx);
+    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, dx, anywhere<2>);
     ASSERT_EQ(walls.positions.size(), 48u);
     int surface = 0;
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -41,9 +51,59 @@ TEST(WallPatches, BoxObstacleIsItsLatticeLayersDeepWithNormalsOutOfTheNearestFac
     EXPECT_FALSE(walls.solid(Vec<2>(0.95, 0.3)));
 }
 
-TEST(WallPatches, BoxObstacleNeedsWholeSpacings) {
-    const Dictionary patch = Dictionary::fromString("type box; min (1 0 0); max (2 0.65 1); layers 1;", "block");
-    EXPECT_THROW(generateWallPatch<3>(patch, 0.1), FatalError);
+TEST(WallPatches, BoxUnderHalfASpacingIsRefused) {
+    const Dictionary patch = Dictionary::fromString("type box; min (1 0 0); max (2 0.04 1); layers 1;", "block");
+    try {
+        generateWallPatch<3>(patch, 0.1, anywhere<3>);
+        FAIL() << "a box 0.4 dx thick was accepted";
+    } catch (const FatalError& error) {
+        EXPECT_NE(std::string(error.what()).find("must be at least half a spacing dx = 0.1 (it is 0.4 dx)"), std::string::npos) << error.what();
+    }
+}
+
+TEST(WallPatches, BoxWallsOfAnyLengthAdjustTheLastSpacingAndKeepTheLayersAtTheirDistances) {
+    // A 1.03 x 0.6 tank at dx = 0.1 (10.3 dx): 10 floor particles, the last dx/2 inside x = 1.03,
+    // 0.8 dx after the one before (the last spacing 1.3 dx less the half spacing each end keeps
+    // is hand-computed: 1.03 - 0.05 - 0.85 = 0.13). The right wall's layers lie 0.05 and 0.15
+    // beyond x = 1.03, as the left wall's lie before x = 0.
+    const double dx = 0.1;
+    const Dictionary patch = Dictionary::fromString("type boxWalls; min (0 0); max (1.03 0.6); layers 2; open (yMax);", "tank");
+    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, dx, anywhere<2>);
+    std::vector<double> floor, rightWall;
+    for (std::size_t k = 0; k < walls.positions.size(); ++k) {
+        const Vec<2>& x = walls.positions[k];
+        if (std::abs(x.y() + 0.05) < 1e-12 && x.x() > 0.0 && x.x() < 1.03) floor.push_back(x.x());
+        if (std::abs(x.y() - 0.35) < 1e-12 && x.x() > 1.03) rightWall.push_back(x.x());
+    }
+    std::sort(floor.begin(), floor.end());
+    ASSERT_EQ(floor.size(), 10u);
+    EXPECT_NEAR(floor[8], 0.85, 1e-12);
+    EXPECT_NEAR(floor[9], 0.98, 1e-12);
+    ASSERT_EQ(rightWall.size(), 2u);
+    EXPECT_NEAR(std::min(rightWall[0], rightWall[1]), 1.08, 1e-12);
+    EXPECT_NEAR(std::max(rightWall[0], rightWall[1]), 1.18, 1e-12);
+    ASSERT_EQ(walls.notes.size(), 1u);
+    EXPECT_EQ(walls.notes[0], "the x extent 1.03 is 10.3 dx: the last spacing is 1.3 dx");
+}
+
+TEST(WallPatches, OneLayerBoxWallsOfAnyLengthStillTileTheirFaces) {
+    // 1.03 x 0.57 x 0.4 at dx = 0.1: the face particles' area vectors still add up to each face.
+    const double dx = 0.1;
+    const Dictionary patch =
+        Dictionary::fromString("type boxWalls; min (0 0 0); max (1.03 0.57 0.4); layers 1; firstLayerOffset 0; open (zMax);", "tank");
+    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, dx, anywhere<3>);
+    Vec<3> floorArea = Vec<3>::Zero();
+    double sideX = 0.0, sideY = 0.0;
+    for (std::size_t k = 0; k < walls.positions.size(); ++k) {
+        const Vec<3>& x = walls.positions[k];
+        const Vec<3> areaVector = walls.areas[k] * walls.normals[k];
+        if (std::abs(x.z()) < 1e-12) floorArea += areaVector;
+        if (std::abs(x.x() - 1.03) < 1e-12) sideX += areaVector.x();
+        if (std::abs(x.y()) < 1e-12) sideY += areaVector.y();
+    }
+    EXPECT_NEAR(floorArea.z(), 1.03 * 0.57, 1e-12);
+    EXPECT_NEAR(sideX, -0.57 * 0.4, 1e-12);
+    EXPECT_NEAR(sideY, 1.03 * 0.4, 1e-12);
 }
 
 TEST(WallPatches, OneLayerBoxWallsOnTheSurfaceTileTheFacesWithCornersOnTheCorners) {
@@ -53,7 +113,7 @@ TEST(WallPatches, OneLayerBoxWallsOnTheSurfaceTileTheFacesWithCornersOnTheCorner
     const double dx = 0.1;
     const Dictionary patch =
         Dictionary::fromString("type boxWalls; min (0 0 0); max (1 0.6 0.4); layers 1; firstLayerOffset 0; open (zMax);", "tank");
-    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, dx);
+    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, dx, anywhere<3>);
     Vec<3> upward = Vec<3>::Zero();  // the z-area of the floor
     double sideX = 0.0;              // the x-area of the xMin side
     int corners = 0;
@@ -79,7 +139,7 @@ TEST(WallPatches, PolygonVertexStandsForHalfOfEachSide) {
     // A 1 x 1 square at dx = 0.25: at each vertex the two half-sides' area vectors add to
     // (dx/2)(n1 + n2), of length dx/sqrt(2), along the bisector.
     const Dictionary patch = Dictionary::fromString("type polygon; points ((0 0) (1 0) (1 1) (0 1)); layers 1; firstLayerOffset 0;", "tank");
-    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, 0.25);
+    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, 0.25, anywhere<2>);
     ASSERT_EQ(walls.positions.size(), 16u);
     Vec<2> total = Vec<2>::Zero();
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -92,4 +152,64 @@ TEST(WallPatches, PolygonVertexStandsForHalfOfEachSide) {
         total += walls.areas[k] * walls.normals[k];
     }
     EXPECT_LT(total.norm(), 1e-14);  // a closed surface
+}
+
+TEST(WallPatches, SurfaceWallOfTwoLayersIsTheLatticeWithinTwoSpacingsOutsideATank) {
+    // The unit cube as a tank at dx = 0.1, two layers: hand count of the lattice points outside
+    // it less than 0.2 away: faces 6 x 100 x 2, edges 12 x 10 x 3 ((0.05, 0.05), (0.05, 0.15)
+    // twice; (0.15, 0.15) is 0.212 away), corners 8 x 4 ((0.05, 0.05, 0.05) and three of two 0.05s).
+    const std::filesystem::path file = writeCubeObj("tankCube.obj");
+    const Dictionary patch = Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes;", file.string()), "tank");
+    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    ASSERT_EQ(walls.positions.size(), 6u * 100 * 2 + 12 * 10 * 3 + 8 * 4);
+    for (std::size_t k = 0; k < walls.positions.size(); ++k) {
+        const Vec<3>& x = walls.positions[k];
+        if (std::abs(x.z() + 0.15) < 1e-12 && x.x() > 0.0 && x.x() < 1.0 && x.y() > 0.0 && x.y() < 1.0) {
+            EXPECT_EQ(walls.layers[k], 1);
+            EXPECT_LT((walls.normals[k] - Vec<3>(0, 0, 1)).norm(), 1e-12);
+        }
+        if (std::abs(x.x() - 1.05) < 1e-12 && x.y() > 0.0 && x.y() < 1.0 && x.z() > 0.0 && x.z() < 1.0) {
+            EXPECT_EQ(walls.layers[k], 0);
+            EXPECT_LT((walls.normals[k] - Vec<3>(-1, 0, 0)).norm(), 1e-12);
+        }
+    }
+    EXPECT_FALSE(walls.solid);
+    EXPECT_THROW(generateWallPatch<3>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes; firstLayerOffset 0;",
+                                                                          file.string()),
+                                                              "tank"),
+                                      0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""}),
+                 FatalError);
+}
+
+TEST(WallPatches, SurfaceWallOfOneLayerIsWhereTheLatticeColumnsPierceIt) {
+    // Each face of the cube takes the 10 x 10 lattice columns that pierce it (the points on a
+    // face's diagonal, which both its triangles touch, counted once): 600 particles of dx^2 on
+    // the surface (offset 0), their area vectors into the fluid adding up to each face.
+    const std::filesystem::path file = writeCubeObj("sampledCube.obj");
+    const Dictionary patch =
+        Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside yes;", file.string()), "tank");
+    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    ASSERT_EQ(walls.positions.size(), 600u);
+    Vec<3> floorArea = Vec<3>::Zero(), total = Vec<3>::Zero();
+    for (std::size_t k = 0; k < walls.positions.size(); ++k) {
+        const Vec<3>& x = walls.positions[k];
+        const double toFace = std::min({x.x(), 1.0 - x.x(), x.y(), 1.0 - x.y(), x.z(), 1.0 - x.z()});
+        EXPECT_NEAR(toFace, 0.0, 1e-12);
+        EXPECT_NEAR(walls.areas[k], 0.01, 1e-15);
+        if (x.z() < 1e-12) floorArea += walls.areas[k] * walls.normals[k];
+        total += walls.areas[k] * walls.normals[k];
+    }
+    EXPECT_LT((floorArea - Vec<3>(0, 0, 1)).norm(), 1e-12);
+    EXPECT_LT(total.norm(), 1e-12);
+    // As a solid body (fluidInside no) the normals point out and fluid regions leave out its inside.
+    const Dictionary body =
+        Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside no;", file.string()), "body");
+    const WallPatchParticles<3> solid = generateWallPatch<3>(body, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    ASSERT_TRUE(solid.solid);
+    EXPECT_TRUE(solid.solid(Vec<3>(0.5, 0.5, 0.5)));
+    EXPECT_FALSE(solid.solid(Vec<3>(1.2, 0.5, 0.5)));
+    for (std::size_t k = 0; k < solid.positions.size(); ++k)
+        if (solid.positions[k].z() < 1e-12) {
+            EXPECT_LT((solid.normals[k] - Vec<3>(0, 0, -1)).norm(), 1e-12);
+        }
 }

@@ -210,8 +210,11 @@ add("inconsistent geometry", "fluid outside the domain", [edit(PARTICLES, "max (
     "fluid region 'column' has a particle at")
 add("inconsistent geometry", "a wall patch outside the domain", [edit(PARTICLES, "max (0.40005 0.17145); layers 3;", "max (0.8001 0.17145); layers 3;")],
     "outside the domain")
-add("inconsistent geometry", "a box not a whole number of spacings", [edit(PARTICLES, "max ($a 0.1143); }", "max (0.0572 0.1143); }")],
-    "must be a positive whole number of spacings")
+add("inconsistent geometry", "a box under half a spacing across", [edit(PARTICLES, "max ($a 0.1143); }", "max (0.001 0.1143); }")],
+    "must be at least half a spacing")
+add("inconsistent geometry", "a surface region in a 2D case", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
+                                                                      "column  { type surface; file \"column.stl\"; }")],
+    "unknown fluid region type 'surface' for a 2D case")
 add("inconsistent geometry", "a fluid region inside the wall", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
                                                                        "column  { type box; min (-0.0057150 0); max (0 0.1143); }")],
     "holds no particle")

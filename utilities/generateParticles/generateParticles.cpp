@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
                    summary.wallParticles, caseDirectory);
         if (summary.droppedFluidParticles > 0) fmt::print(" ({} fluid particles overlapping walls dropped)", summary.droppedFluidParticles);
         fmt::print("\n");
+        for (const std::string& note : summary.notes) fmt::print("note: {}\n", note);
         for (const std::string& warning : summary.warnings) fmt::print("warning: {}\n", warning);
     });
 }
