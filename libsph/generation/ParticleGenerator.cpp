@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <functional>
 
@@ -141,6 +142,37 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     wallCells.build(allWalls.positions);
     if (boundaries) requireDistinctPatches(*boundaries, patchNames, patchOf, allWalls.positions, wallCells, dx);
 
+    // A fluid lattice point less than dx/2 from a wall particle overlaps the wall. Where every
+    // such particle belongs to a one-layer wall (its particles on the wall's surface) the point
+    // is moved out along their normals to dx/2 in front of them rather than dropped: on a curved
+    // wall dropping would remove a ring of fluid dx/2 thick and lower the water by it. Behind
+    // such a wall, or near a layered wall, it is dropped.
+    std::vector<bool> oneLayerPatch(patchNames.size(), true);
+    for (std::size_t j = 0; j < allWalls.layers.size(); ++j)
+        if (allWalls.layers[j] > 0) oneLayerPatch[static_cast<std::size_t>(patchOf[j])] = false;
+    const double clearance = 0.5 * dx * (1.0 - 1e-9);
+    const auto clearOfTheWalls = [&](Vec<D> x) -> std::optional<Vec<D>> {
+        for (int pass = 0; pass < D; ++pass) {  // a corner pushes along each of its walls in turn
+            bool drop = false;
+            double deepest = 0.0;
+            Vec<D> push = Vec<D>::Zero();
+            wallCells.forEachNeighbour(x, clearance, [&](std::uint32_t j, const Vec<D>& fromWall, double) {
+                const double gap = fromWall.dot(allWalls.normals[j]);
+                if (!oneLayerPatch[static_cast<std::size_t>(patchOf[j])] || gap <= 0.0) drop = true;
+                else if (0.5 * dx - gap > deepest) {
+                    deepest = 0.5 * dx - gap;
+                    push = deepest * allWalls.normals[j];
+                }
+            });
+            if (drop) return std::nullopt;
+            if (deepest == 0.0) return x;
+            x += push;
+        }
+        bool overlaps = false;
+        wallCells.forEachNeighbour(x, clearance, [&](std::uint32_t, const Vec<D>&, double) { overlaps = true; });
+        return overlaps ? std::nullopt : std::optional<Vec<D>>(x);
+    };
+
     // Fluid regions.
     std::vector<Vec<D>> fluidPositions, fluidVelocities;
     std::vector<double> surfaceHeight;    // per particle: the top of its region along -g
@@ -155,17 +187,20 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         for (const std::string& note : filled.notes) notes.push_back(fmt::format("fluid region '{}': {}", name, note));
         double top = -std::numeric_limits<double>::infinity();
         std::size_t first = fluidPositions.size();
-        for (const Vec<D>& x : filled.positions) {
-            if (!insideDomain<D>(x, lo, hi))
+        for (const Vec<D>& latticePoint : filled.positions) {
+            if (!insideDomain<D>(latticePoint, lo, hi))
                 throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
-                                                             fmt::join(x, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
-            bool overlapsWall = std::any_of(solids.begin(), solids.end(), [&](const auto& solid) { return solid(x); });
-            if (!overlapsWall)
-                wallCells.forEachNeighbour(x, 0.5 * dx * (1.0 - 1e-9), [&](std::uint32_t, const Vec<D>&, double) { overlapsWall = true; });
-            if (overlapsWall) {
+                                                             fmt::join(latticePoint, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
+            if (std::any_of(solids.begin(), solids.end(), [&](const auto& solid) { return solid(latticePoint); })) {
                 ++dropped;
                 continue;
             }
+            const std::optional<Vec<D>> kept = clearOfTheWalls(latticePoint);
+            if (!kept) {
+                ++dropped;
+                continue;
+            }
+            const Vec<D> x = *kept;
             fluidPositions.push_back(x);
             fluidVelocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
             if (initialPressure == "analytic") {

@@ -9,7 +9,8 @@
 //                                                 // the pressure of each region's velocity solution
 //   fluid      { <name> { type box; ... } ... }    // see FluidRegions.hpp
 //   boundaries { <patch> { type boxWalls; ... } ... }  // see WallPatches.hpp
-// Fluid particles closer than dx/2 to a wall particle, or inside an obstacle, are dropped.
+// Fluid particles inside an obstacle, or closer than dx/2 to a wall particle, are dropped, but
+// for those in front of a one-layer wall, which are moved out to dx/2 from it.
 // Mass is rho0 dx^D; the density follows the initial pressure through the equation of state.
 #pragma once
 

@@ -1,13 +1,17 @@
-// Fluid region generation: boxes of any extent.
+// Fluid region generation: boxes of any extent, closed surfaces, fluid beside a one-layer wall.
 #include "generation/FluidRegions.hpp"
 
 #include "generation/CubeSurface.hpp"
+#include "generation/ParticleGenerator.hpp"
+#include "io/ParticleFile.hpp"
+#include "support/CaseFixture.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace sph;
 
@@ -78,4 +82,34 @@ TEST(FluidRegions, SurfaceThatIsOpenOrMissingIsRefusedNamingTheFile) {
     EXPECT_NE(failure("type surface; file \"tank.step\";").find("unknown extension '.step'; valid: .stl (ASCII or binary), .obj"), std::string::npos);
     EXPECT_THROW(fillFluidRegion<2>(Dictionary::fromString("type surface; file \"a.stl\";", "water"), 0.1, {Vec<2>::Zero(), Vec<2>::Ones(), ""}),
                  FatalError);
+}
+
+TEST(FluidRegions, FluidInFrontOfAOneLayerWallIsMovedOutToHalfASpacingNotDropped) {
+    // ellipticalTank2D: the lattice inside an ellipse 2 x 1 with one layer of wall particles on
+    // it. Every lattice point inside is kept (counted here apart), none closer than dx/2 to a
+    // wall particle; with three layers from the wall back the points near it are dropped instead.
+    const auto dir = sph::test::copyCase("ellipticalTank2D");
+    const double dx = 0.05;
+    std::size_t inside = 0;
+    for (int i = 0; i < 100; ++i)
+        for (int j = 0; j < 60; ++j) {
+            const double x = -2.5 + (i + 0.5) * dx, y = -1.5 + (j + 0.5) * dx;
+            if (std::pow(x / 2.0, 2) + y * y < 1.0) ++inside;
+        }
+    const GenerationSummary oneLayer = generateParticles(dir, true);
+    EXPECT_EQ(oneLayer.fluidParticles, inside);
+    EXPECT_EQ(oneLayer.droppedFluidParticles, 0u);
+    StateHeader header;
+    const ParticleSet<2> fluid = readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
+    const ParticleSet<2> walls = readParticleFile<2>(dir / "0/walls.vtu", "walls", header);
+    double closest = 1.0;
+    for (std::size_t i = 0; i < fluid.size(); ++i)
+        for (std::size_t j = 0; j < walls.size(); ++j) closest = std::min(closest, (fluid.position[i] - walls.position[j]).norm());
+    EXPECT_GE(closest, 0.5 * dx * (1.0 - 1e-9));
+    EXPECT_LT(closest, 0.5 * dx * 1.001);  // some were moved there
+
+    sph::test::replaceInFile(dir / "system/generateParticlesDict", "layers 1; firstLayerOffset 0;", "layers 3; firstLayerOffset 0;");
+    const GenerationSummary layered = generateParticles(dir, true);
+    EXPECT_GT(layered.droppedFluidParticles, 0u);
+    EXPECT_EQ(layered.fluidParticles + layered.droppedFluidParticles, inside);
 }
