@@ -24,6 +24,20 @@ LatticeAxis latticeAxis(const Dictionary& dict, const std::string& keyword, doub
     return {lo, hi, dx, static_cast<int>(whole), std::abs(cells - whole) <= 1e-6 * std::max(1.0, whole)};
 }
 
+template <int D>
+std::array<LatticeAxis, D> boxAxes(const Dictionary& dict, const Vec<D>& lo, const Vec<D>& hi, double dx, std::vector<std::string>& notes) {
+    std::array<LatticeAxis, D> axes;
+    for (int d = 0; d < D; ++d) {
+        axes[static_cast<std::size_t>(d)] = latticeAxis(dict, "max", lo[d], hi[d], dx);
+        if (const std::string note = axes[static_cast<std::size_t>(d)].note(d); !note.empty()) notes.push_back(note);
+    }
+    return axes;
+}
+
+template std::array<LatticeAxis, 1> boxAxes<1>(const Dictionary&, const Vec<1>&, const Vec<1>&, double, std::vector<std::string>&);
+template std::array<LatticeAxis, 2> boxAxes<2>(const Dictionary&, const Vec<2>&, const Vec<2>&, double, std::vector<std::string>&);
+template std::array<LatticeAxis, 3> boxAxes<3>(const Dictionary&, const Vec<3>&, const Vec<3>&, double, std::vector<std::string>&);
+
 std::string LatticeAxis::note(int axis) const {
     if (whole) return "";
     const double last = count == 1 ? 0.0 : (hi - lo) / dx - (count - 1);
@@ -52,14 +66,9 @@ void forEachLatticePoint(const std::array<LatticeAxis, D>& axes, const std::func
 template <int D>
 std::vector<Vec<D>> fillBox(const Dictionary& region, double dx, std::vector<std::string>& notes) {
     const Vec<D> lo = region.getVector<D>("min"), hi = region.getVector<D>("max");
-    std::array<LatticeAxis, D> axes;
+    const std::array<LatticeAxis, D> axes = boxAxes<D>(region, lo, hi, dx, notes);
     double particles = 1.0;
-    for (int d = 0; d < D; ++d) {
-        const auto dd = static_cast<std::size_t>(d);
-        axes[dd] = latticeAxis(region, "max", lo[d], hi[d], dx);
-        particles *= axes[dd].count;
-        if (const std::string note = axes[dd].note(d); !note.empty()) notes.push_back(note);
-    }
+    for (const LatticeAxis& axis : axes) particles *= axis.count;
     requireMemory(particles * solverBytesPerParticle,
                   fmt::format("{}: the fluid box of {:.3g} particles at spacing {:g}", region.where().str(), particles, dx));
     std::vector<Vec<D>> points;

@@ -18,6 +18,7 @@
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -77,5 +78,10 @@ struct LatticeAxis {
 // The lattice along [lo, hi]; FatalError naming the keyword when the extent is under half a
 // spacing or more spacings than an int holds.
 LatticeAxis latticeAxis(const Dictionary& dict, const std::string& keyword, double lo, double hi, double dx);
+
+// The lattice along each axis of the box [lo, hi] of `dict` (errors name its keyword max), with
+// a note in `notes` for each axis whose last spacing is adjusted.
+template <int D>
+std::array<LatticeAxis, D> boxAxes(const Dictionary& dict, const Vec<D>& lo, const Vec<D>& hi, double dx, std::vector<std::string>& notes);
 
 }  // namespace sph

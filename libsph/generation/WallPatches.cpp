@@ -17,16 +17,6 @@ namespace {
 constexpr const char* faceNames[3][2] = {{"xMin", "xMax"}, {"yMin", "yMax"}, {"zMin", "zMax"}};
 
 template <int D>
-std::array<LatticeAxis, D> boxAxes(const Dictionary& patch, const Vec<D>& lo, const Vec<D>& hi, double dx, std::vector<std::string>& notes) {
-    std::array<LatticeAxis, D> axes;
-    for (int d = 0; d < D; ++d) {
-        axes[static_cast<std::size_t>(d)] = latticeAxis(patch, "max", lo[d], hi[d], dx);
-        if (const std::string note = axes[static_cast<std::size_t>(d)].note(d); !note.empty()) notes.push_back(note);
-    }
-    return axes;
-}
-
-template <int D>
 WallPatchParticles<D> boxWalls(const Dictionary& patch, double dx, int layers, double offset) {
     const Vec<D> lo = patch.getVector<D>("min"), hi = patch.getVector<D>("max");
     WallPatchParticles<D> walls;

@@ -27,7 +27,7 @@
 namespace sph {
 
 struct TriangleSurface::Queries {
-    vtkSmartPointer<vtkPolyData> surface;
+    vtkSmartPointer<vtkPolyData> surface;  // what the two queries below search, held as long as they are
     vtkSmartPointer<vtkSelectEnclosedPoints> enclosed = vtkSmartPointer<vtkSelectEnclosedPoints>::New();
     vtkSmartPointer<vtkStaticCellLocator> locator = vtkSmartPointer<vtkStaticCellLocator>::New();
     vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
