@@ -13,6 +13,7 @@
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "physics/ModelContext.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -38,6 +39,8 @@ public:
     // The fewest layers of wall particles the model needs for a kernel of this support; a
     // wall-force model needs exactly one, on the wall surface.
     virtual int minimumLayers(double /*support*/, double /*dx*/) const { return 1; }
+    // The layers a patch that names none is generated with (driver/WallLayoutFromModel).
+    virtual int layersToGenerate(double support, double dx) const { return minimumLayers(support, dx); }
 
     // True when the patch's wall density is part of the integrated state.
     virtual bool evolvesWallDensity() const { return false; }
@@ -60,6 +63,9 @@ public:
     virtual void addWallForces(FluidSystem<D>& /*system*/, const CellLinkedList<D>& /*patchCells*/, std::size_t /*begin*/, std::size_t /*end*/,
                                double /*t*/) {}
 };
+
+// Layers of wall particles, the first dx/2 behind the wall, that fill a kernel support behind it.
+inline int layersFillingSupport(double support, double dx) { return static_cast<int>(std::ceil(support / dx - 0.5 - 1e-9)); }
 
 template <int D>
 using BoundaryModelRegistry = Registry<std::unique_ptr<BoundaryModel<D>>, const Dictionary&, const ModelContext&>;

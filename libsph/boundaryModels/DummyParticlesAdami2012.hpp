@@ -23,7 +23,7 @@ public:
 
     bool actsThroughWallParticles() const override { return true; }
     // The first fluid row sits dx/2 from the wall surface, so the layers must reach support - dx/2 behind it.
-    int minimumLayers(double support, double dx) const override { return static_cast<int>(std::ceil(support / dx - 0.5 - 1e-9)); }
+    int minimumLayers(double support, double dx) const override { return layersFillingSupport(support, dx); }
     std::string describe() const override;
     void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
 

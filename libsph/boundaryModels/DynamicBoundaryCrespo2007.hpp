@@ -19,6 +19,9 @@ public:
     bool actsThroughWallParticles() const override { return true; }
     std::string describe() const override { return "dynamicBoundary"; }
     bool evolvesWallDensity() const override { return true; }
+    // Fewer layers run (the wall pushes back through its density), but only a full support
+    // gives the fluid near the wall its full kernel sum.
+    int layersToGenerate(double support, double dx) const override { return layersFillingSupport(support, dx); }
     void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
 };
 

@@ -107,12 +107,14 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
         const int needed = models[p]->minimumLayers(support, dx);
         if (!models[p]->actsThroughWallParticles() && layers[p] > 1)
             patchDict.fail("type", fmt::format("'{}' acts from one layer of wall particles on the wall surface, but patch '{}' has {} layers; "
-                                               "generate it with layers 1; firstLayerOffset 0; in system/generateParticlesDict",
+                                               "generate it with layers 1; firstLayerOffset 0; in system/generateParticlesDict, or with no layers there (the "
+                                               "generator then takes them from the model)",
                                                type, patchNames[p], layers[p]));
         if (layers[p] < needed)
             patchDict.fail("type", fmt::format("'{}' needs at least {} layers of wall particles to fill the kernel support ({:g} = {:g} dx) behind "
-                                               "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict, "
-                                               "or choose a wall-force model (deficiencyCorrection) on one layer",
+                                               "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict (or with no layers "
+                                               "there: the generator then takes them from the model), or choose a wall-force model "
+                                               "(deficiencyCorrection) on one layer",
                                                type, needed, support, support / dx, patchNames[p], layers[p], needed));
     }
 }
@@ -173,9 +175,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     fmt::print("Selecting kernel {}: hdx {:g}, dx {:g}, h {:g}, support radius {:g}\n", kernelDict.get<std::string>("type"), hdx, dx, h,
                std::visit([](const auto& k) { return k.supportRadius(); }, kernel));
 
-    const ModelContext context{dx, h, properties.c0, properties.rho0, properties.nu,
-                               std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
-                               std::visit([](const auto& e) { return e.exponent(); }, properties.eos)};
+    const ModelContext context = modelContext(properties, dx, h);
     const Dictionary& densityDict = schemes.subDict("density");
     const DensityFormulation density = selectDensity(densityDict);
     fmt::print("Selecting density {}\n", densityDict.get<std::string>("type"));

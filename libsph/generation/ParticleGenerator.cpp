@@ -3,6 +3,7 @@
 #include "core/MemoryBudget.hpp"
 
 #include "driver/CaseDirectory.hpp"
+#include "driver/WallLayoutFromModel.hpp"
 #include "generation/FluidRegions.hpp"
 #include "generation/WallPatches.hpp"
 #include "io/ParticleFile.hpp"
@@ -120,12 +121,19 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     std::vector<std::string> patchNames, notes;
     const Dictionary* boundaries = dict.findSubDict("boundaries");
     WallPatchParticles<D> allWalls;
+    WallLayoutFromModel<D> layoutFromModel(caseDirectory, dx, properties);
     std::vector<int> patchOf;
     std::vector<std::function<bool(const Vec<D>&)>> solids;
     if (boundaries) {
         for (const std::string& name : boundaries->keywords()) {
             const Dictionary& patch = boundaries->subDict(name);
-            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx, shapeDomain);
+            const WallLayout layout = wallLayout(patch, [&] {
+                std::string why;
+                const WallLayout fromModel = layoutFromModel(name, patch, why);
+                notes.push_back(fmt::format("wall patch '{}': {}", name, why));
+                return fromModel;
+            });
+            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx, layout, shapeDomain);
             for (const std::string& note : generated.notes) notes.push_back(fmt::format("wall patch '{}': {}", name, note));
             for (std::size_t k = 0; k < generated.positions.size(); ++k) {
                 if (!insideDomain<D>(generated.positions[k], lo, hi))

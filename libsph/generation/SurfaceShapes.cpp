@@ -120,13 +120,14 @@ std::vector<Vec<3>> fillSurface(const Dictionary& region, double dx, const std::
     return points;
 }
 
-WallPatchParticles<3> surfaceWalls(const Dictionary& patch, double dx, int layers, const std::filesystem::path& caseDirectory,
+WallPatchParticles<3> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,
                                    const Vec<3>& domainMin, const Vec<3>& domainMax) {
+    const int layers = layout.layers;
     const std::shared_ptr<const TriangleSurface> surface = readSurface(patch, caseDirectory);
     const bool fluidInside = patch.get<bool>("fluidInside");
     WallPatchParticles<3> walls;
     if (layers == 1) {
-        const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
+        const double offset = layout.firstLayerOffset;
         for (const Triangle& t : surface->triangles()) {
             const Vec<3> intoFluid = fluidInside ? Vec<3>(-t.outward) : t.outward;
             const auto add = [&](const Vec<3>& x, double area) { walls.add(x - offset * dx * intoFluid, intoFluid, std::sqrt(area), 0, area); };

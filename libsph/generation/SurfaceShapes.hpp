@@ -30,7 +30,7 @@ namespace sph {
 std::vector<Vec<3>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<3>& domainMin,
                                 const Vec<3>& domainMax);
 
-WallPatchParticles<3> surfaceWalls(const Dictionary& patch, double dx, int layers, const std::filesystem::path& caseDirectory,
+WallPatchParticles<3> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,
                                    const Vec<3>& domainMin, const Vec<3>& domainMax);
 
 }  // namespace sph

@@ -223,16 +223,26 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
 
 }  // namespace
 
-template <int D>
-WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const GenerationDomain<D>& domain) {
-    const std::string type = patch.get<std::string>("type");
+WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel) {
+    if (!patch.found("layers")) {
+        WallLayout layout = fromModel();
+        if (patch.found("firstLayerOffset")) layout.firstLayerOffset = patch.getNonNegative("firstLayerOffset");
+        return layout;
+    }
     const int layers = patch.get<int>("layers");
     // A kernel support needs a few layers; thousands would be a slip that fills the memory.
     constexpr int maxLayers = 1000;
     if (layers < 1 || layers > maxLayers) patch.fail("layers", fmt::format("must be from 1 to {}, found {}", maxLayers, layers));
+    return {layers, patch.getNonNegativeOrDefault("firstLayerOffset", 0.5)};
+}
+
+template <int D>
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain) {
+    const std::string type = patch.get<std::string>("type");
+    const int layers = layout.layers;
+    const double offset = layout.firstLayerOffset;
     if constexpr (D == 3)
-        if (type == "surface") return surfaceWalls(patch, dx, layers, domain.caseDirectory, domain.min, domain.max);
-    const double offset = patch.getNonNegativeOrDefault("firstLayerOffset", 0.5);
+        if (type == "surface") return surfaceWalls(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
     if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
     if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);
     if constexpr (D == 2) {
@@ -245,8 +255,8 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, cons
                      fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }
 
-template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double, const GenerationDomain<1>&);
-template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double, const GenerationDomain<2>&);
-template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double, const GenerationDomain<3>&);
+template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double, const WallLayout&, const GenerationDomain<1>&);
+template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double, const WallLayout&, const GenerationDomain<2>&);
+template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double, const WallLayout&, const GenerationDomain<3>&);
 
 }  // namespace sph

@@ -2,6 +2,7 @@
 // a unit normal pointing into the fluid, its spacing along the wall, and its layer (0 nearest
 // the fluid). Layer k lies (k + firstLayerOffset) dx behind the wall surface; the default
 // offset 1/2 puts the surface halfway between fluid and wall particles (Adami et al. 2012).
+// A patch without `layers` takes the layout its wall model needs (driver/WallLayoutFromModel).
 //   boundaries
 //   {
 //       tank     { type boxWalls; min (0 0); max (1.6 0.8); layers 3; open (yMax); }  // 1D-3D
@@ -63,7 +64,18 @@ struct WallPatchParticles {
     void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer) { add(x, n, spacing, layer, std::pow(spacing, D - 1)); }
 };
 
+// How many layers of wall particles a patch has, and where the first lies behind its surface.
+struct WallLayout {
+    int layers;
+    double firstLayerOffset;  // in dx
+};
+
+// The patch's own `layers` and `firstLayerOffset` (default 1/2); without `layers`, the layout
+// `fromModel` gives (its model's, driver/WallLayoutFromModel), a firstLayerOffset named
+// in the patch still applying.
+WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel);
+
 template <int D>
-WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const GenerationDomain<D>& domain);
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain);
 
 }  // namespace sph

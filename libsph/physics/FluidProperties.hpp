@@ -15,6 +15,9 @@
 #include "core/Vector.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "io/Dictionary.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <variant>
 
 namespace sph {
 
@@ -30,5 +33,12 @@ struct FluidProperties {
 
 template <int D>
 FluidProperties<D> readFluidProperties(const Dictionary& dict);
+
+// What the models are built with, for spacing dx and smoothing length h.
+template <int D>
+ModelContext modelContext(const FluidProperties<D>& properties, double dx, double h) {
+    return {dx, h, properties.c0, properties.rho0, properties.nu, std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
+            std::visit([](const auto& e) { return e.exponent(); }, properties.eos)};
+}
 
 }  // namespace sph

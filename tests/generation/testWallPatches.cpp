@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 using namespace sph;
 
@@ -15,11 +16,18 @@ using namespace sph;
 template <int D>
 const GenerationDomain<D> anywhere{Vec<D>::Constant(-10.0), Vec<D>::Constant(10.0), ""};
 
+// A patch that names its layers: its wall model is never asked.
+template <int D>
+WallPatchParticles<D> generateWithItsLayers(const Dictionary& patch, double dx, const GenerationDomain<D>& domain) {
+    const WallLayout layout = wallLayout(patch, []() -> WallLayout { throw std::logic_error("the model's layout was asked for"); });
+    return generateWallPatch<D>(patch, dx, layout, domain);
+}
+
 TEST(WallPatches, BoxObstacleIsItsLatticeLayersDeepWithNormalsOutOfTheNearestFace) {
     // A 10 x 6 dx block, 2 layers: everything but the 6 x 2 core (hand count 60 - 12 = 48).
     const double dx = 0.1;
     const Dictionary patch = Dictionary::fromString("type box; min (1 0); max (2 0.6); layers 2;", "block");
-    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, dx, anywhere<2>);
+    const WallPatchParticles<2> walls = generateWithItsLayers<2>(patch, dx, anywhere<2>);
     ASSERT_EQ(walls.positions.size(), 48u);
     int surface = 0;
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -54,7 +62,7 @@ TEST(WallPatches, BoxObstacleIsItsLatticeLayersDeepWithNormalsOutOfTheNearestFac
 TEST(WallPatches, BoxUnderHalfASpacingIsRefused) {
     const Dictionary patch = Dictionary::fromString("type box; min (1 0 0); max (2 0.04 1); layers 1;", "block");
     try {
-        generateWallPatch<3>(patch, 0.1, anywhere<3>);
+        generateWithItsLayers<3>(patch, 0.1, anywhere<3>);
         FAIL() << "a box 0.4 dx thick was accepted";
     } catch (const FatalError& error) {
         EXPECT_NE(std::string(error.what()).find("must be at least half a spacing dx = 0.1 (it is 0.4 dx)"), std::string::npos) << error.what();
@@ -68,7 +76,7 @@ TEST(WallPatches, BoxWallsOfAnyLengthAdjustTheLastSpacingAndKeepTheLayersAtTheir
     // beyond x = 1.03, as the left wall's lie before x = 0.
     const double dx = 0.1;
     const Dictionary patch = Dictionary::fromString("type boxWalls; min (0 0); max (1.03 0.6); layers 2; open (yMax);", "tank");
-    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, dx, anywhere<2>);
+    const WallPatchParticles<2> walls = generateWithItsLayers<2>(patch, dx, anywhere<2>);
     std::vector<double> floor, rightWall;
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
         const Vec<2>& x = walls.positions[k];
@@ -91,7 +99,7 @@ TEST(WallPatches, OneLayerBoxWallsOfAnyLengthStillTileTheirFaces) {
     const double dx = 0.1;
     const Dictionary patch =
         Dictionary::fromString("type boxWalls; min (0 0 0); max (1.03 0.57 0.4); layers 1; firstLayerOffset 0; open (zMax);", "tank");
-    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, dx, anywhere<3>);
+    const WallPatchParticles<3> walls = generateWithItsLayers<3>(patch, dx, anywhere<3>);
     Vec<3> floorArea = Vec<3>::Zero();
     double sideX = 0.0, sideY = 0.0;
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -113,7 +121,7 @@ TEST(WallPatches, OneLayerBoxWallsOnTheSurfaceTileTheFacesWithCornersOnTheCorner
     const double dx = 0.1;
     const Dictionary patch =
         Dictionary::fromString("type boxWalls; min (0 0 0); max (1 0.6 0.4); layers 1; firstLayerOffset 0; open (zMax);", "tank");
-    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, dx, anywhere<3>);
+    const WallPatchParticles<3> walls = generateWithItsLayers<3>(patch, dx, anywhere<3>);
     Vec<3> upward = Vec<3>::Zero();  // the z-area of the floor
     double sideX = 0.0;              // the x-area of the xMin side
     int corners = 0;
@@ -139,7 +147,7 @@ TEST(WallPatches, PolygonVertexStandsForHalfOfEachSide) {
     // A 1 x 1 square at dx = 0.25: at each vertex the two half-sides' area vectors add to
     // (dx/2)(n1 + n2), of length dx/sqrt(2), along the bisector.
     const Dictionary patch = Dictionary::fromString("type polygon; points ((0 0) (1 0) (1 1) (0 1)); layers 1; firstLayerOffset 0;", "tank");
-    const WallPatchParticles<2> walls = generateWallPatch<2>(patch, 0.25, anywhere<2>);
+    const WallPatchParticles<2> walls = generateWithItsLayers<2>(patch, 0.25, anywhere<2>);
     ASSERT_EQ(walls.positions.size(), 16u);
     Vec<2> total = Vec<2>::Zero();
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -160,7 +168,7 @@ TEST(WallPatches, SurfaceWallOfTwoLayersIsTheLatticeWithinTwoSpacingsOutsideATan
     // twice; (0.15, 0.15) is 0.212 away), corners 8 x 4 ((0.05, 0.05, 0.05) and three of two 0.05s).
     const std::filesystem::path file = writeCubeObj("tankCube.obj");
     const Dictionary patch = Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes;", file.string()), "tank");
-    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    const WallPatchParticles<3> walls = generateWithItsLayers<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
     ASSERT_EQ(walls.positions.size(), 6u * 100 * 2 + 12 * 10 * 3 + 8 * 4);
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
         const Vec<3>& x = walls.positions[k];
@@ -174,7 +182,7 @@ TEST(WallPatches, SurfaceWallOfTwoLayersIsTheLatticeWithinTwoSpacingsOutsideATan
         }
     }
     EXPECT_FALSE(walls.solid);
-    EXPECT_THROW(generateWallPatch<3>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes; firstLayerOffset 0;",
+    EXPECT_THROW(generateWithItsLayers<3>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes; firstLayerOffset 0;",
                                                                           file.string()),
                                                               "tank"),
                                       0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""}),
@@ -188,7 +196,7 @@ TEST(WallPatches, SurfaceWallOfOneLayerIsWhereTheLatticeColumnsPierceIt) {
     const std::filesystem::path file = writeCubeObj("sampledCube.obj");
     const Dictionary patch =
         Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside yes;", file.string()), "tank");
-    const WallPatchParticles<3> walls = generateWallPatch<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    const WallPatchParticles<3> walls = generateWithItsLayers<3>(patch, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
     ASSERT_EQ(walls.positions.size(), 600u);
     Vec<3> floorArea = Vec<3>::Zero(), total = Vec<3>::Zero();
     for (std::size_t k = 0; k < walls.positions.size(); ++k) {
@@ -204,7 +212,7 @@ TEST(WallPatches, SurfaceWallOfOneLayerIsWhereTheLatticeColumnsPierceIt) {
     // As a solid body (fluidInside no) the normals point out and fluid regions leave out its inside.
     const Dictionary body =
         Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside no;", file.string()), "body");
-    const WallPatchParticles<3> solid = generateWallPatch<3>(body, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
+    const WallPatchParticles<3> solid = generateWithItsLayers<3>(body, 0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""});
     ASSERT_TRUE(solid.solid);
     EXPECT_TRUE(solid.solid(Vec<3>(0.5, 0.5, 0.5)));
     EXPECT_FALSE(solid.solid(Vec<3>(1.2, 0.5, 0.5)));
@@ -212,4 +220,17 @@ TEST(WallPatches, SurfaceWallOfOneLayerIsWhereTheLatticeColumnsPierceIt) {
         if (solid.positions[k].z() < 1e-12) {
             EXPECT_LT((solid.normals[k] - Vec<3>(0, 0, -1)).norm(), 1e-12);
         }
+}
+
+TEST(WallPatches, APatchWithoutLayersTakesItsModelsLayoutAndItsOwnOffset) {
+    const auto fromModel = [] { return WallLayout{4, 0.5}; };
+    const WallLayout own = wallLayout(Dictionary::fromString("type boxWalls; min (0 0); max (1 1); layers 2;", "tank"), fromModel);
+    EXPECT_EQ(own.layers, 2);
+    EXPECT_EQ(own.firstLayerOffset, 0.5);
+    const WallLayout model = wallLayout(Dictionary::fromString("type boxWalls; min (0 0); max (1 1);", "tank"), fromModel);
+    EXPECT_EQ(model.layers, 4);
+    EXPECT_EQ(model.firstLayerOffset, 0.5);
+    const WallLayout offset = wallLayout(Dictionary::fromString("type boxWalls; min (0 0); max (1 1); firstLayerOffset 0.25;", "tank"), fromModel);
+    EXPECT_EQ(offset.layers, 4);
+    EXPECT_EQ(offset.firstLayerOffset, 0.25);
 }
