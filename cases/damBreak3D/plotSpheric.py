@@ -4,6 +4,7 @@ heights at the four gauges (postProcessing/heights, sphericTest2Heights.csv) and
 P1-P4 on the box's impact face (postProcessing/boxPressure, sphericTest2Pressures.csv, the
 impact window only). Writes sphericTest2.png."""
 import csv
+import re
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -17,6 +18,12 @@ def rows(name):
 def measured(name):
     with open(name) as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def spacing():
+    """The case's one parameter, dx, from system/caseParameters."""
+    with open("system/caseParameters") as f:
+        return float(re.search(r"^dx\s+([^;\s]+)\s*;", f.read(), re.M).group(1))
 
 
 heights = rows("postProcessing/heights/0/height.dat")
@@ -39,7 +46,7 @@ for k in range(4):
     ax.plot([r[0] for r in pressure if 0.3 <= r[0] <= 0.65], [r[k + 1] for r in pressure if 0.3 <= r[0] <= 0.65], "-", label="sphkit")
     ax.set(title="P%d" % (k + 1), xlabel="t [s]", ylabel="p [Pa]")
     ax.legend(fontsize=8)
-fig.suptitle("SPHERIC Test 2 (Kleefsman et al. 2005): sphkit dx = 0.025 m against the measurements")
+fig.suptitle("SPHERIC Test 2 (Kleefsman et al. 2005): sphkit dx = %g m against the measurements" % spacing())
 fig.tight_layout()
 fig.savefig("sphericTest2.png", dpi=90)
 peak = [max(r[k + 1] for r in pressure if 0.35 <= r[0] <= 0.65) for k in range(4)]

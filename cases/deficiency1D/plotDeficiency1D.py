@@ -3,7 +3,18 @@
 deficiency correction (paper Fig. 3), from wcsph -rates; writes deficiency1D.csv and .png."""
 import csv
 import glob
+import re
 import sys
+
+
+def entry(path, pattern):
+    """A number from the case's dictionaries, so the title follows the case as it is set."""
+    with open(path) as f:
+        return float(re.search(pattern, f.read(), re.M).group(1))
+
+
+# The cubic spline's influence radius is 2h, h = hdx dx.
+influence = 2.0 * entry("system/sphSchemes", r"hdx\s+([^;\s]+)") * entry("system/generateParticlesDict", r"^spacing\s+([^;\s]+)")
 
 directory = sorted(glob.glob("postProcessing/rates/*"))[-1]
 rows = sorted(csv.DictReader(open(directory + "/fluid.csv")), key=lambda r: float(r["x"]))
@@ -27,7 +38,7 @@ ax.plot(x, before, "o-", ms=3, label="uncorrected")
 ax.plot(x, after, "s-", ms=3, label="with deficiency correction")
 ax.set_xlabel("x")
 ax.set_ylabel("acceleration")
-ax.set_title("1D fluid at uniform pressure 1, r_inf = 0.5")
+ax.set_title("1D fluid at uniform pressure 1, r_inf = %g" % influence)
 ax.legend()
 ax.grid(True, alpha=0.3)
 fig.tight_layout()

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace sph {
 
@@ -127,57 +128,160 @@ double sideSign(const Dictionary& patch) {
     return side == "left" ? 1.0 : -1.0;
 }
 
-WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
-    const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
-    if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
+// One straight face of a 2D wall path (polyline or polygon), divided into `count` equal spacings.
+struct PathFace {
+    Vec<2> start, along, tangent, normal;
+    double length, spacing;
+    int count;
+
+    // The point `spacings` spacings from the start, `depth` behind the face.
+    Vec<2> at(double spacings, double depth) const { return start + along * (spacings / count) - depth * normal; }
+};
+
+std::vector<PathFace> pathFaces(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double dx) {
     const double sign = sideSign(patch);
-    WallPatchParticles<2> walls;
-    for (std::size_t s = 0; s + 1 < points.size(); ++s) {
-        const Vec<2> along = points[s + 1] - points[s];
+    const std::size_t m = points.size(), faces = closed ? m : m - 1;
+    std::vector<PathFace> path;
+    for (std::size_t s = 0; s < faces; ++s) {
+        const Vec<2> along = points[(s + 1) % m] - points[s];
         const double length = along.norm();
-        if (!(length > 0.0)) patch.fail("points", fmt::format("points {} and {} coincide", s, s + 1));
+        if (!(length > 0.0)) patch.fail("points", fmt::format("points {} and {} coincide", s, (s + 1) % m));
         const Vec<2> tangent = along / length;
-        const Vec<2> normal = sign * Vec<2>(-tangent.y(), tangent.x());
-        const int n = std::max(1, static_cast<int>(std::lround(length / dx)));
-        for (int layer = 0; layer < layers; ++layer)
-            for (int k = 0; k < n; ++k)
-                walls.add(points[s] + along * ((k + 0.5) / n) - (layer + offset) * dx * normal, normal, length / n, layer);
+        const int count = std::max(1, static_cast<int>(std::lround(length / dx)));
+        path.push_back({points[s], along, tangent, sign * Vec<2>(-tangent.y(), tangent.x()), length, length / count, count});
+    }
+    return path;
+}
+
+// A layer `depth` behind the corner where face `a` meets face `b`, when face b turns towards the
+// fluid (the wall's side is convex): the two faces' offset lines leave a gap behind the corner.
+// It is filled at about dx along a path from face a's nearest particle (`gapA` before the
+// corner) to face b's (`gapB` after it): up to a right angle the offset lines extended to where
+// they meet (the mitre), which gives a right-angled corner the block the faces' lattices
+// continue; beyond, an arc of radius `depth` round the corner, so no particle lies farther
+// than `depth` from the wall.
+void fillConvexCorner(const PathFace& a, const PathFace& b, double depth, double gapA, double gapB, double dx, int layer, WallPatchParticles<2>& walls) {
+    const Vec<2> corner = b.start, behindA = corner - depth * a.normal, behindB = corner - depth * b.normal;
+    const double turn = std::acos(std::clamp(a.tangent.dot(b.tangent), -1.0, 1.0));
+    const bool mitre = turn <= 0.5 * std::numbers::pi + 1e-12;
+    const double extension = depth * std::tan(0.5 * turn);
+    const double join = mitre ? 2.0 * extension : depth * turn, path = gapA + join + gapB;
+    const double turnSense = a.normal.x() * b.normal.y() - a.normal.y() * b.normal.x() > 0.0 ? 1.0 : -1.0;
+    const long inserted = std::lround(path / dx) - 1;
+    const double step = path / static_cast<double>(inserted + 1);
+    for (long k = 1; k <= inserted; ++k) {
+        const double arc = static_cast<double>(k) * step, u = arc - gapA;
+        if (u < 0.0) {
+            walls.add(behindA + u * a.tangent, a.normal, step, layer);
+        } else if (u > join) {
+            walls.add(behindB + (u - join) * b.tangent, b.normal, step, layer);
+        } else if (!mitre) {
+            const double angle = turnSense * u / depth;
+            const Vec<2> outward = -a.normal;
+            const Vec<2> radial(std::cos(angle) * outward.x() - std::sin(angle) * outward.y(), std::sin(angle) * outward.x() + std::cos(angle) * outward.y());
+            walls.add(corner + depth * radial, -radial, step, layer);
+        } else if (std::abs(u - extension) < 1e-9 * dx) {
+            walls.add(behindA + extension * a.tangent, (a.normal + b.normal).normalized(), step, layer);
+        } else if (u < extension) {
+            walls.add(behindA + u * a.tangent, a.normal, step, layer);
+        } else {
+            walls.add(behindB - (join - u) * b.tangent, b.normal, step, layer);
+        }
+    }
+}
+
+// A particle of one face of a wall path, before the corners are resolved.
+struct PathParticle {
+    Vec<2> x, normal;
+    double spacing, area, depth;
+    int layer;
+    bool kept = true;
+};
+
+// How deep x lies behind `face`, or nothing when it is not level with the face (beyond its ends).
+std::optional<double> depthBehind(const Vec<2>& x, const PathFace& face, double dx) {
+    const Vec<2> relative = x - face.start;
+    const double along = relative.dot(face.tangent);
+    if (along < -1e-9 * dx || along > face.length + 1e-9 * dx) return std::nullopt;
+    return -relative.dot(face.normal);
+}
+
+// Where the wall's side of the corner between faces a and b is concave, their layers overlap:
+// each particle belongs to the face it lies nearer (b on a tie), and a particle of a closer
+// than 3/4 dx to one of b's is left out, as is any that would come out in front of the other
+// face (a wedge thinner than the layers). A right-angled corner keeps its lattice, each point once.
+void resolveConcaveCorner(const PathFace& a, std::vector<PathParticle>& ofA, const PathFace& b, std::vector<PathParticle>& ofB, double deepest, double dx) {
+    const double tolerance = 1e-9 * dx;
+    std::vector<Vec<2>> nearCorner;  // b's particles within reach of a's layers
+    for (PathParticle& p : ofB) {
+        const std::optional<double> behindA = depthBehind(p.x, a, dx);
+        if (!p.kept || !behindA || !(p.depth > 0.0)) continue;
+        if (*behindA < p.depth - tolerance) p.kept = false;
+        else if (*behindA < deepest + dx) nearCorner.push_back(p.x);
+    }
+    for (PathParticle& p : ofA) {
+        const std::optional<double> behindB = depthBehind(p.x, b, dx);
+        if (!p.kept || !behindB || !(p.depth > 0.0)) continue;
+        p.kept = *behindB > p.depth + tolerance &&
+                 std::none_of(nearCorner.begin(), nearCorner.end(), [&](const Vec<2>& y) { return (y - p.x).norm() < 0.75 * dx; });
+    }
+}
+
+// The layers of a 2D wall path. Each face's particles sit at its spacings' centres (polyline)
+// or, on a polygon, at its spacings' ends with one on each vertex (bisector normal, standing
+// for half of each adjacent spacing). At a vertex, a layer behind the wall fills the gap where
+// the wall's side is convex (fillConvexCorner) and drops the overlap where it is concave
+// (resolveConcaveCorner); layers on the wall surface are left as they are.
+WallPatchParticles<2> wallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double dx, int layers, double offset) {
+    const std::vector<PathFace> faces = pathFaces(patch, points, closed, dx);
+    const std::size_t m = faces.size();
+    const auto convex = [](const PathFace& a, const PathFace& b) { return b.tangent.dot(a.normal) > 0.0; };
+    const double firstPoint = closed ? 0.0 : 0.5;  // in spacings from the face's start
+    // Each face's particles, layer by layer; on a polygon the vertex at its start comes first
+    // (where the wall's side is convex the corner's fill takes its place).
+    std::vector<std::vector<PathParticle>> ofFace(m);
+    for (std::size_t s = 0; s < m; ++s) {
+        const PathFace& face = faces[s];
+        const PathFace& previous = faces[(s + m - 1) % m];
+        for (int layer = 0; layer < layers; ++layer) {
+            const double depth = (layer + offset) * dx;
+            if (closed && (!(depth > 0.0) || !convex(previous, face))) {
+                const Vec<2> bisector = (previous.normal + face.normal).normalized();
+                const double vertexArea = (0.5 * previous.spacing * previous.normal + 0.5 * face.spacing * face.normal).norm();
+                ofFace[s].push_back({face.start - depth / bisector.dot(face.normal) * bisector, bisector, 0.5 * (previous.spacing + face.spacing), vertexArea, depth, layer});
+            }
+            for (int k = closed ? 1 : 0; k < face.count; ++k)
+                ofFace[s].push_back({face.at(k + firstPoint, depth), face.normal, face.spacing, face.spacing, depth, layer});
+        }
+    }
+    const std::size_t corners = closed ? m : m - 1;
+    const double deepest = (layers - 1 + offset) * dx;
+    for (std::size_t s = 0; s < corners; ++s)
+        if (!convex(faces[s], faces[(s + 1) % m])) resolveConcaveCorner(faces[s], ofFace[s], faces[(s + 1) % m], ofFace[(s + 1) % m], deepest, dx);
+    WallPatchParticles<2> walls;
+    for (int layer = 0; layer < layers; ++layer) {
+        const double depth = (layer + offset) * dx;
+        for (std::size_t s = 0; s < m; ++s) {
+            for (const PathParticle& p : ofFace[s])
+                if (p.layer == layer && p.kept) walls.add(p.x, p.normal, p.spacing, layer, p.area);
+            const PathFace& next = faces[(s + 1) % m];
+            if (s < corners && depth > 0.0 && convex(faces[s], next))
+                fillConvexCorner(faces[s], next, depth, (1.0 - firstPoint) * faces[s].spacing, (closed ? 1.0 : 0.5) * next.spacing, dx, layer, walls);
+        }
     }
     return walls;
 }
 
-// A closed polygon with a particle on every vertex (normal along the bisector of its two
-// faces' normals) and equal spacing along each side.
+WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
+    const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
+    if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
+    return wallPath(patch, points, false, dx, layers, offset);
+}
+
 WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
-    const double sign = sideSign(patch);
-    const std::size_t m = points.size();
-    std::vector<Vec<2>> faceNormal(m);
-    std::vector<int> count(m);
-    for (std::size_t s = 0; s < m; ++s) {
-        const Vec<2> along = points[(s + 1) % m] - points[s];
-        if (!(along.norm() > 0.0)) patch.fail("points", fmt::format("points {} and {} coincide", s, (s + 1) % m));
-        faceNormal[s] = sign * Vec<2>(-along.y(), along.x()).normalized();
-        count[s] = std::max(1, static_cast<int>(std::lround(along.norm() / dx)));
-    }
-    WallPatchParticles<2> walls;
-    for (int layer = 0; layer < layers; ++layer) {
-        const double distance = (layer + offset) * dx;
-        for (std::size_t s = 0; s < m; ++s) {
-            const Vec<2> along = points[(s + 1) % m] - points[s];
-            const double faceSpacing = along.norm() / count[s];
-            // The vertex: bisector normal, moved so both faces' offset lines pass through it.
-            const std::size_t previous = (s + m - 1) % m;
-            const Vec<2> bisector = (faceNormal[previous] + faceNormal[s]).normalized();
-            const double previousSpacing = (points[s] - points[previous]).norm() / count[previous];
-            const double vertexArea = (0.5 * previousSpacing * faceNormal[previous] + 0.5 * faceSpacing * faceNormal[s]).norm();
-            walls.add(points[s] - distance / bisector.dot(faceNormal[s]) * bisector, bisector, 0.5 * (previousSpacing + faceSpacing), layer, vertexArea);
-            for (int k = 1; k < count[s]; ++k)
-                walls.add(points[s] + along * (static_cast<double>(k) / count[s]) - distance * faceNormal[s], faceNormal[s], faceSpacing, layer);
-        }
-    }
-    return walls;
+    return wallPath(patch, points, true, dx, layers, offset);
 }
 
 WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, double offset) {

@@ -29,6 +29,10 @@
 // polyline's and polygon's normal is on the `side` (left or right) of the direction of travel;
 // a polygon (closed) has a particle on each vertex, its normal along the bisector, so a
 // counter-clockwise polygon with side left is a tank whose particle 0 sits on the first point.
+// At their corners, layers behind the wall fill the gap where the wall's side is convex (the
+// faces' offset lines extended to their mitre up to a right angle, which gives a right-angled
+// corner its lattice block; an arc of the layer's depth beyond) and keep each particle once
+// where it is concave (it belongs to the nearer face); layers on the surface are as they were.
 #pragma once
 
 #include "core/Vector.hpp"
