@@ -170,22 +170,23 @@ void fillConvexCorner(const PathFace& a, const PathFace& b, double depth, double
     const long inserted = std::lround(path / dx) - 1;
     const double step = path / static_cast<double>(inserted + 1);
     for (long k = 1; k <= inserted; ++k) {
-        const double arc = static_cast<double>(k) * step, u = arc - gapA;
-        if (u < 0.0) {
+        const double u = static_cast<double>(k) * step - gapA;  // from the point behind the corner on a's line
+        if (u <= 0.0) {
             walls.add(behindA + u * a.tangent, a.normal, step, layer);
-        } else if (u > join) {
+        } else if (u >= join) {
             walls.add(behindB + (u - join) * b.tangent, b.normal, step, layer);
-        } else if (!mitre) {
-            const double angle = turnSense * u / depth;
-            const Vec<2> outward = -a.normal;
-            const Vec<2> radial(std::cos(angle) * outward.x() - std::sin(angle) * outward.y(), std::sin(angle) * outward.x() + std::cos(angle) * outward.y());
-            walls.add(corner + depth * radial, -radial, step, layer);
-        } else if (std::abs(u - extension) < 1e-9 * dx) {
-            walls.add(behindA + extension * a.tangent, (a.normal + b.normal).normalized(), step, layer);
-        } else if (u < extension) {
-            walls.add(behindA + u * a.tangent, a.normal, step, layer);
         } else {
-            walls.add(behindB - (join - u) * b.tangent, b.normal, step, layer);
+            // Past both faces' ends the nearest point of the wall is the corner: the normal
+            // points to it, as in boxWalls' corners.
+            Vec<2> x;
+            if (!mitre) {
+                const double angle = turnSense * u / depth;
+                const Vec<2> outward = -a.normal;
+                x = corner + depth * Vec<2>(std::cos(angle) * outward.x() - std::sin(angle) * outward.y(), std::sin(angle) * outward.x() + std::cos(angle) * outward.y());
+            } else {
+                x = u < extension ? Vec<2>(behindA + u * a.tangent) : Vec<2>(behindB - (join - u) * b.tangent);
+            }
+            walls.add(x, (corner - x).normalized(), step, layer);
         }
     }
 }
