@@ -1,6 +1,7 @@
 #include "generation/FluidRegions.hpp"
 
 #include "core/MemoryBudget.hpp"
+#include "core/PlaneLoop.hpp"
 #include "generation/SurfaceShapes.hpp"
 #include "io/SelectByType.hpp"
 
@@ -99,16 +100,6 @@ Vec<2> semiAxesOf(const Dictionary& region) {
     return axes;
 }
 
-bool insidePolygon(const std::vector<Vec<2>>& polygon, const Vec<2>& x) {
-    bool inside = false;
-    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const Vec<2>& a = polygon[i];
-        const Vec<2>& b = polygon[j];
-        if ((a.y() > x.y()) != (b.y() > x.y()) && x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) inside = !inside;
-    }
-    return inside;
-}
-
 }  // namespace
 
 template <int D>
@@ -135,17 +126,17 @@ FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, con
         if (type == "polygon") {
             const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
             if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
-            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insidePolygon(polygon, x); });
+            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insideLoop(polygon, x); });
             return result;
         }
     }
-    if constexpr (D == 3) {
+    if constexpr (D >= 2) {
         if (type == "surface") {
-            result.positions = fillSurface(region, dx, domain.caseDirectory, domain.min, domain.max);
+            result.positions = fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
             return result;
         }
     }
-    const std::string valid = D == 2 ? "box, circle, ellipse, polygon" : D == 3 ? "box, surface" : "box";
+    const std::string valid = D == 2 ? "box, circle, ellipse, polygon, surface" : D == 3 ? "box, surface" : "box";
     throw FatalError(region.entry("type").tokens().front().where,
                      fmt::format("unknown fluid region type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }

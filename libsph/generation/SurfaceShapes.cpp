@@ -1,5 +1,6 @@
 #include "generation/SurfaceShapes.hpp"
 
+#include "io/ClosedCurves.hpp"
 #include "io/TriangleSurface.hpp"
 
 #include <Eigen/Geometry>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 namespace sph {
@@ -26,11 +28,59 @@ std::shared_ptr<const TriangleSurface> readSurface(const Dictionary& dict, const
     }
 }
 
+std::shared_ptr<const ClosedCurves> readCurves(const Dictionary& dict, const std::filesystem::path& caseDirectory) {
+    const std::string file = dict.get<std::string>("file");
+    const double scale = dict.getPositiveOrDefault("scale", 1.0);
+    const double slice = dict.getOrDefault<double>("slice", 0.0);
+    try {
+        return std::make_shared<const ClosedCurves>(ClosedCurves::read(caseDirectory / file, scale, slice));
+    } catch (const FatalError& error) {
+        dict.fail("file", error.what());
+    }
+}
+
+// A curve's vertices resampled at about dx along it: its corners (vertices turning by more
+// than cornerTurn) kept, and each stretch between two corners divided into equal lengths
+// (the whole loop from its first vertex when it has none), so a finely tessellated curve
+// gives one particle per spacing and a polygon keeps its vertices.
+constexpr double cornerTurn = 20.0 * std::numbers::pi / 180.0;
+
+std::vector<Vec<2>> resampleLoop(const std::vector<Vec<2>>& loop, double dx) {
+    const std::size_t n = loop.size();
+    std::vector<std::size_t> corners;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec<2> in = (loop[i] - loop[(i + n - 1) % n]).normalized(), out = (loop[(i + 1) % n] - loop[i]).normalized();
+        if (std::acos(std::clamp(in.dot(out), -1.0, 1.0)) > cornerTurn) corners.push_back(i);
+    }
+    if (corners.empty()) corners.push_back(0);
+    std::vector<Vec<2>> resampled;
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        const std::size_t from = corners[c], to = corners[(c + 1) % corners.size()];
+        std::vector<Vec<2>> stretch{loop[from]};
+        for (std::size_t i = (from + 1) % n; ; i = (i + 1) % n) {
+            stretch.push_back(loop[i]);
+            if (i == to) break;
+        }
+        std::vector<double> arc{0.0};
+        for (std::size_t i = 1; i < stretch.size(); ++i) arc.push_back(arc.back() + (stretch[i] - stretch[i - 1]).norm());
+        const long pieces = std::max(1L, std::lround(arc.back() / dx));
+        std::size_t segment = 1;
+        for (long p = 0; p < pieces; ++p) {
+            const double s = arc.back() * static_cast<double>(p) / static_cast<double>(pieces);
+            while (segment + 1 < arc.size() && arc[segment] < s) ++segment;
+            const double t = arc[segment] > arc[segment - 1] ? (s - arc[segment - 1]) / (arc[segment] - arc[segment - 1]) : 0.0;
+            resampled.push_back(stretch[segment - 1] + t * (stretch[segment] - stretch[segment - 1]));
+        }
+    }
+    return resampled;
+}
+
 // Visits the domain's lattice points (anchored at its min corner) within [lower, upper].
-void forEachLatticePointWithin(const Vec<3>& domainMin, const Vec<3>& domainMax, double dx, const Vec<3>& lower, const Vec<3>& upper,
-                               const std::function<void(const Vec<3>&)>& visit) {
-    std::array<long, 3> first, last;
-    for (int d = 0; d < 3; ++d) {
+template <int D>
+void forEachLatticePointWithin(const Vec<D>& domainMin, const Vec<D>& domainMax, double dx, const Vec<D>& lower, const Vec<D>& upper,
+                               const std::function<void(const Vec<D>&)>& visit) {
+    std::array<long, 3> first{}, last{};
+    for (int d = 0; d < D; ++d) {
         const auto dd = static_cast<std::size_t>(d);
         const long cells = static_cast<long>(std::floor((domainMax[d] - domainMin[d]) / dx));
         first[dd] = std::clamp(static_cast<long>(std::floor((lower[d] - domainMin[d]) / dx - 0.5)), 0L, cells);
@@ -38,8 +88,10 @@ void forEachLatticePointWithin(const Vec<3>& domainMin, const Vec<3>& domainMax,
     }
     for (long k = first[2]; k <= last[2]; ++k)
         for (long j = first[1]; j <= last[1]; ++j)
-            for (long i = first[0]; i <= last[0]; ++i)
-                visit(domainMin + dx * Vec<3>(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5, static_cast<double>(k) + 0.5));
+            for (long i = first[0]; i <= last[0]; ++i) {
+                const Vec<3> index(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5, static_cast<double>(k) + 0.5);
+                visit(domainMin + dx * index.head<D>());
+            }
 }
 
 // Halves a triangle across its longest edge until no edge is longer than `longest`, and visits
@@ -110,49 +162,114 @@ void forEachLatticePointOn(const Triangle& triangle, const Vec<3>& domainMin, do
 
 }  // namespace
 
-std::vector<Vec<3>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<3>& domainMin,
-                                const Vec<3>& domainMax) {
-    const std::shared_ptr<const TriangleSurface> surface = readSurface(region, caseDirectory);
-    std::vector<Vec<3>> points;
-    forEachLatticePointWithin(domainMin, domainMax, dx, surface->lower(), surface->upper(), [&](const Vec<3>& x) {
-        if (surface->inside(x)) points.push_back(x);
+// A lattice point this close to the surface lies on it (a flat face through lattice points:
+// a slope of 45 degrees, a plane at a lattice coordinate). It belongs to the wall, not the
+// fluid, so that the two never hold the same point.
+constexpr double onSurfaceTolerance = 1e-9;  // in spacings
+
+template <class Surface, int D>
+bool onSurface(const Surface& surface, const Vec<D>& x, double dx) {
+    Vec<D> closest;
+    return surface.distance(x, closest) < onSurfaceTolerance * dx;
+}
+
+// The unit normal into the fluid at a lattice point on the surface, where the closest point
+// gives no direction: the gradient of the signed distance (negative inside), sampled
+// 1e-3 dx either side along each axis.
+template <class Surface, int D>
+Vec<D> normalOnSurface(const Surface& surface, const Vec<D>& x, double dx, bool fluidInside) {
+    const double step = 1e-3 * dx;
+    const auto signedDistance = [&](const Vec<D>& y) {
+        Vec<D> closest;
+        const double distance = surface.distance(y, closest);
+        return surface.inside(y) ? -distance : distance;
+    };
+    Vec<D> gradient;
+    for (int d = 0; d < D; ++d) {
+        const Vec<D> offset = step * Vec<D>::Unit(d);
+        gradient[d] = signedDistance(x + offset) - signedDistance(x - offset);
+    }
+    return (fluidInside ? -1.0 : 1.0) * gradient.normalized();
+}
+
+template <int D>
+std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<D>& domainMin,
+                                const Vec<D>& domainMax) {
+    const auto surface = [&] {
+        if constexpr (D == 2) return readCurves(region, caseDirectory);
+        else return readSurface(region, caseDirectory);
+    }();
+    std::vector<Vec<D>> points;
+    forEachLatticePointWithin<D>(domainMin, domainMax, dx, surface->lower(), surface->upper(), [&](const Vec<D>& x) {
+        if (surface->inside(x) && !onSurface(*surface, x, dx)) points.push_back(x);
     });
     return points;
 }
 
-WallPatchParticles<3> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,
-                                   const Vec<3>& domainMin, const Vec<3>& domainMax) {
-    const int layers = layout.layers;
-    const std::shared_ptr<const TriangleSurface> surface = readSurface(patch, caseDirectory);
-    const bool fluidInside = patch.get<bool>("fluidInside");
+namespace {
+
+// One layer of a 2D surface: each curve resampled at about dx, as a polygon's wall.
+WallPatchParticles<2> sampledWall(const Dictionary& patch, const ClosedCurves& curves, bool fluidInside, double dx, double offset) {
+    WallPatchParticles<2> walls;
+    // Each loop runs counter-clockwise: fluid inside it is on the left.
+    for (const std::vector<Vec<2>>& loop : curves.loops()) addWallPath(patch, resampleLoop(loop, dx), true, fluidInside ? 1.0 : -1.0, dx, 1, offset, walls);
+    return walls;
+}
+
+// One layer of a 3D surface: triangle by triangle.
+WallPatchParticles<3> sampledWall(const TriangleSurface& surface, bool fluidInside, const Vec<3>& domainMin, double dx, double offset) {
     WallPatchParticles<3> walls;
+    for (const Triangle& t : surface.triangles()) {
+        const Vec<3> intoFluid = fluidInside ? Vec<3>(-t.outward) : t.outward;
+        const auto add = [&](const Vec<3>& x, double area) { walls.add(x - offset * dx * intoFluid, intoFluid, std::sqrt(area), 0, area); };
+        // A plane facing an axis takes the lattice's own points, as a box's face; any other
+        // triangle its pieces, whose areas add up to its own.
+        if (t.outward.cwiseAbs().maxCoeff() > 1.0 - 1e-9) forEachLatticePointOn(t, domainMin, dx, add);
+        else forEachPieceOf(t, 2.0 * dx, add);
+    }
+    return walls;
+}
+
+}  // namespace
+
+template <int D>
+WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,
+                                   const Vec<D>& domainMin, const Vec<D>& domainMax) {
+    const int layers = layout.layers;
+    const auto surface = [&] {
+        if constexpr (D == 2) return readCurves(patch, caseDirectory);
+        else return readSurface(patch, caseDirectory);
+    }();
+    const bool fluidInside = patch.get<bool>("fluidInside");
+    WallPatchParticles<D> walls;
     if (layers == 1) {
-        const double offset = layout.firstLayerOffset;
-        for (const Triangle& t : surface->triangles()) {
-            const Vec<3> intoFluid = fluidInside ? Vec<3>(-t.outward) : t.outward;
-            const auto add = [&](const Vec<3>& x, double area) { walls.add(x - offset * dx * intoFluid, intoFluid, std::sqrt(area), 0, area); };
-            // A plane facing an axis takes the lattice's own points, as a box's face; any other
-            // triangle its pieces, whose areas add up to its own.
-            if (t.outward.cwiseAbs().maxCoeff() > 1.0 - 1e-9) forEachLatticePointOn(t, domainMin, dx, add);
-            else forEachPieceOf(t, 2.0 * dx, add);
-        }
+        if constexpr (D == 2) walls = sampledWall(patch, *surface, fluidInside, dx, layout.firstLayerOffset);
+        else walls = sampledWall(*surface, fluidInside, domainMin, dx, layout.firstLayerOffset);
     } else {
         if (patch.found("firstLayerOffset"))
             patch.fail("firstLayerOffset", fmt::format("a surface's wall of {} layers is the lattice behind the surface, which no offset moves; "
                                                        "it applies to one layer (layers 1;)",
                                                        layers));
-        const Vec<3> margin = Vec<3>::Constant(layers * dx);
-        forEachLatticePointWithin(domainMin, domainMax, dx, surface->lower() - margin, surface->upper() + margin, [&](const Vec<3>& x) {
-            if (surface->inside(x) == fluidInside) return;
-            Vec<3> closest;
+        const Vec<D> margin = Vec<D>::Constant(layers * dx);
+        forEachLatticePointWithin<D>(domainMin, domainMax, dx, surface->lower() - margin, surface->upper() + margin, [&](const Vec<D>& x) {
+            Vec<D> closest;
             const double distance = surface->distance(x, closest);
-            if (!(distance < layers * dx) || !(distance > 0.0)) return;
+            if (distance < onSurfaceTolerance * dx) {
+                walls.add(x, normalOnSurface(*surface, x, dx, fluidInside), dx, 0);
+                return;
+            }
+            if (surface->inside(x) == fluidInside || !(distance < layers * dx)) return;
             walls.add(x, (closest - x) / distance, dx, std::min(layers - 1, static_cast<int>(distance / dx)));
         });
     }
     if (walls.positions.empty()) patch.fail("file", "the surface makes no wall particle inside the domain");
-    if (!fluidInside) walls.solid = [surface](const Vec<3>& x) { return surface->inside(x); };
+    if (!fluidInside) walls.solid = [surface](const Vec<D>& x) { return surface->inside(x); };
     return walls;
 }
+
+template std::vector<Vec<2>> fillSurface<2>(const Dictionary&, double, const std::filesystem::path&, const Vec<2>&, const Vec<2>&);
+template std::vector<Vec<3>> fillSurface<3>(const Dictionary&, double, const std::filesystem::path&, const Vec<3>&, const Vec<3>&);
+template WallPatchParticles<2> surfaceWalls<2>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<2>&, const Vec<2>&);
+template WallPatchParticles<3> surfaceWalls<3>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<3>&, const Vec<3>&);
 
 }  // namespace sph

@@ -138,8 +138,7 @@ struct PathFace {
     Vec<2> at(double spacings, double depth) const { return start + along * (spacings / count) - depth * normal; }
 };
 
-std::vector<PathFace> pathFaces(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double dx) {
-    const double sign = sideSign(patch);
+std::vector<PathFace> pathFaces(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double sign, double dx) {
     const std::size_t m = points.size(), faces = closed ? m : m - 1;
     std::vector<PathFace> path;
     for (std::size_t s = 0; s < faces; ++s) {
@@ -228,13 +227,16 @@ void resolveConcaveCorner(const PathFace& a, std::vector<PathParticle>& ofA, con
     }
 }
 
+}  // namespace
+
 // The layers of a 2D wall path. Each face's particles sit at its spacings' centres (polyline)
 // or, on a polygon, at its spacings' ends with one on each vertex (bisector normal, standing
 // for half of each adjacent spacing). At a vertex, a layer behind the wall fills the gap where
 // the wall's side is convex (fillConvexCorner) and drops the overlap where it is concave
 // (resolveConcaveCorner); layers on the wall surface are left as they are.
-WallPatchParticles<2> wallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double dx, int layers, double offset) {
-    const std::vector<PathFace> faces = pathFaces(patch, points, closed, dx);
+void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double sign, double dx, int layers, double offset,
+                 WallPatchParticles<2>& walls) {
+    const std::vector<PathFace> faces = pathFaces(patch, points, closed, sign, dx);
     const std::size_t m = faces.size();
     const auto convex = [](const PathFace& a, const PathFace& b) { return b.tangent.dot(a.normal) > 0.0; };
     const double firstPoint = closed ? 0.0 : 0.5;  // in spacings from the face's start
@@ -259,7 +261,6 @@ WallPatchParticles<2> wallPath(const Dictionary& patch, const std::vector<Vec<2>
     const double deepest = (layers - 1 + offset) * dx;
     for (std::size_t s = 0; s < corners; ++s)
         if (!convex(faces[s], faces[(s + 1) % m])) resolveConcaveCorner(faces[s], ofFace[s], faces[(s + 1) % m], ofFace[(s + 1) % m], deepest, dx);
-    WallPatchParticles<2> walls;
     for (int layer = 0; layer < layers; ++layer) {
         const double depth = (layer + offset) * dx;
         for (std::size_t s = 0; s < m; ++s) {
@@ -270,19 +271,24 @@ WallPatchParticles<2> wallPath(const Dictionary& patch, const std::vector<Vec<2>
                 fillConvexCorner(faces[s], next, depth, (1.0 - firstPoint) * faces[s].spacing, (closed ? 1.0 : 0.5) * next.spacing, dx, layer, walls);
         }
     }
-    return walls;
 }
+
+namespace {
 
 WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
-    return wallPath(patch, points, false, dx, layers, offset);
+    WallPatchParticles<2> walls;
+    addWallPath(patch, points, false, sideSign(patch), dx, layers, offset, walls);
+    return walls;
 }
 
 WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
-    return wallPath(patch, points, true, dx, layers, offset);
+    WallPatchParticles<2> walls;
+    addWallPath(patch, points, true, sideSign(patch), dx, layers, offset, walls);
+    return walls;
 }
 
 WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, double offset) {
@@ -346,8 +352,8 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, cons
     const std::string type = patch.get<std::string>("type");
     const int layers = layout.layers;
     const double offset = layout.firstLayerOffset;
-    if constexpr (D == 3)
-        if (type == "surface") return surfaceWalls(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
+    if constexpr (D >= 2)
+        if (type == "surface") return surfaceWalls<D>(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
     if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
     if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);
     if constexpr (D == 2) {
@@ -355,7 +361,7 @@ WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, cons
         if (type == "polygon") return polygon(patch, dx, layers, offset);
         if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
     }
-    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline" : D == 3 ? "box, boxWalls, surface" : "box, boxWalls";
+    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline, surface" : D == 3 ? "box, boxWalls, surface" : "box, boxWalls";
     throw FatalError(patch.entry("type").tokens().front().where,
                      fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
 }

@@ -79,6 +79,12 @@ struct WallLayout {
 // in the patch still applying.
 WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel);
 
+// Adds the layers of a 2D path of straight faces through `points` (closed: a polygon, the last
+// point joined to the first), the normal on the left of the direction of travel for sign +1 and
+// on the right for -1; errors (coincident points) name `patch`'s keyword `points`.
+void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double sign, double dx, int layers, double offset,
+                 WallPatchParticles<2>& walls);
+
 template <int D>
 WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain);
 

@@ -1,26 +1,22 @@
 #include "io/TriangleSurface.hpp"
 
 #include "core/FatalError.hpp"
-#include "io/VtkErrors.hpp"
+#include "io/GeometryFile.hpp"
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
-#include <vtkCleanPolyData.h>
 #include <vtkGenericCell.h>
-#include <vtkOBJReader.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
-#include <vtkSTLReader.h>
 #include <vtkSelectEnclosedPoints.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <utility>
 
@@ -41,24 +37,10 @@ TriangleSurface::TriangleSurface(TriangleSurface&&) noexcept = default;
 
 namespace {
 
-// Reads, merges coincident points (an STL repeats each vertex per triangle) and triangulates.
+// Reads, merges coincident points and triangulates.
 vtkSmartPointer<vtkPolyData> readPolygons(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    vtkSmartPointer<vtkAbstractPolyDataReader> reader;
-    if (extension == ".stl") reader = vtkSmartPointer<vtkSTLReader>::New();
-    else if (extension == ".obj") reader = vtkSmartPointer<vtkOBJReader>::New();
-    else throw FatalError(fmt::format("surface file '{}': unknown extension '{}'; valid: .stl (ASCII or binary), .obj", file.string(), extension));
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw FatalError(fmt::format("surface file '{}' does not exist", file.string()));
-    vtkObject::GlobalWarningDisplayOff();
-    VtkErrors errors;
-    reader->AddObserver(vtkCommand::ErrorEvent, errors.callback);
-    reader->SetFileName(file.c_str());
-    auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
-    clean->SetInputConnection(reader->GetOutputPort());
     auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
-    triangulate->SetInputConnection(clean->GetOutputPort());
+    triangulate->SetInputData(readGeometryFile(file, ".stl (ASCII or binary), .obj"));
     // Orders every triangle's vertices the same way round (not yet outwards: see below).
     auto orient = vtkSmartPointer<vtkPolyDataNormals>::New();
     orient->SetInputConnection(triangulate->GetOutputPort());
@@ -66,8 +48,6 @@ vtkSmartPointer<vtkPolyData> readPolygons(const std::filesystem::path& file) {
     orient->SplittingOff();
     orient->ComputePointNormalsOff();
     orient->Update();
-    if (!errors.text.empty() || reader->GetErrorCode() != 0)
-        throw FatalError(fmt::format("surface file '{}' is not readable{}", file.string(), errors.text.empty() ? "" : ": " + errors.firstLine()));
     vtkSmartPointer<vtkPolyData> surface = orient->GetOutput();
     if (surface->GetNumberOfPolys() == 0) throw FatalError(fmt::format("surface file '{}' holds no triangle", file.string()));
     return surface;

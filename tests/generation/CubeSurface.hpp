@@ -1,4 +1,4 @@
-// A unit cube [0, 1]^3 as a Wavefront OBJ file of six quads, written for the surface tests. Its
+// Closed shapes written as files for the surface tests. A unit cube [0, 1]^3 as a Wavefront OBJ file of six quads, written for the surface tests. Its
 // faces are listed clockwise seen from outside (normals inward), which the reader must turn
 // outward; `leaveOut` drops the top face to make an open surface.
 #pragma once
@@ -21,5 +21,21 @@ inline std::filesystem::path writeCubeObj(const std::string& name, bool leaveOut
            "f 6 8 4 2\n"   // x = 1
            "f 4 8 7 3\n";  // y = 1
     if (!leaveOut) out << "f 7 8 6 5\n";  // z = 1
+    return file;
+}
+
+// A closed polyline in the plane z = 0 as an OBJ of `l` lines (its first point repeated at its
+// end unless `open`), for the 2D surface tests.
+template <class Points>
+std::filesystem::path writeCurveObj(const std::string& name, const Points& points, bool open = false) {
+    const std::filesystem::path directory = std::filesystem::path(SPHKIT_TEST_WORK_DIR) / "surfaces";
+    std::filesystem::create_directories(directory);
+    const std::filesystem::path file = directory / name;
+    std::ofstream out(file);
+    out.precision(17);
+    for (const auto& x : points) out << "v " << x[0] << ' ' << x[1] << " 0\n";
+    out << 'l';
+    for (std::size_t k = 1; k <= points.size(); ++k) out << ' ' << k;
+    out << (open ? "\n" : " 1\n");
     return file;
 }

@@ -212,9 +212,9 @@ add("inconsistent geometry", "a wall patch outside the domain", [edit(PARTICLES,
     "outside the domain")
 add("inconsistent geometry", "a box under half a spacing across", [edit(PARTICLES, "max ($a 0.1143); }", "max (0.001 0.1143); }")],
     "must be at least half a spacing")
-add("inconsistent geometry", "a surface region in a 2D case", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
-                                                                      "column  { type surface; file \"column.stl\"; }")],
-    "unknown fluid region type 'surface' for a 2D case")
+add("inconsistent geometry", "a 2D surface region whose file is missing", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
+                                                                                 "column  { type surface; file \"column.obj\"; }")],
+    "surface file '<case>/column.obj' does not exist")
 add("inconsistent geometry", "a fluid region inside the wall", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
                                                                        "column  { type box; min (-0.0057150 0); max (0 0.1143); }")],
     "holds no particle")
