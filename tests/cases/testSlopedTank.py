@@ -33,12 +33,11 @@ class SlopedTank(unittest.TestCase):
             with open(os.path.join(case, "stillWaterComparison.csv")) as f:
                 rows = {row["model"]: row for row in csv.DictReader(f)}
             self.assertEqual(set(rows), {"dummyParticles", "dynamicBoundary", "deficiencyCorrectionBoundaryIntegral"})
-            # Stored (this code, README): pressure L2 on x = 0.5 at t = 2, of rho0 g H.
-            stored = {"dummyParticles": 0.0123, "dynamicBoundary": 0.0107, "deficiencyCorrectionBoundaryIntegral": 0.0151}
+            # The README's figures are checked to their digits by DocumentedFigures.slopedTank2D.
             for model, row in rows.items():
                 self.assertEqual(float(row["t"]), 2.0)
                 self.assertEqual(int(row["most_behind_wall"]), 0, model)  # counted at every step
-                self.assertAlmostEqual(float(row["pressure_L2"]), stored[model], delta=0.1 * stored[model], msg=model)
+                self.assertLess(float(row["pressure_L2"]), 0.02, model)
             # The particle walls settle (KE 3.5e-7 and 7.0e-7 g H); the correction keeps about
             # 100 times more (6.3e-5 g H), the creep issue 19 describes: pinned so a fix shows.
             self.assertLess(float(rows["dummyParticles"]["kinetic_energy_over_gH"]), 1e-6)
