@@ -7,6 +7,7 @@
 #include "equationsOfState/EquationOfState.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "kernels/Kernel.hpp"
+#include "generation/WallPatches.hpp"
 #include "motion/PatchMotion.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
 #include "viscosity/Viscosity.hpp"
@@ -60,6 +61,8 @@ std::string modelCatalogue(const std::string& family) {
          [] {
              return listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");
          }},
+        {"fluidRegion", [] { return listFamily(makeFluidShapeRegistry<2>(), "system/generateParticlesDict, fluid { <name> { type ...; } }"); }},
+        {"wallPatch", [] { return listFamily(makeWallPatchRegistry<2>(), "system/generateParticlesDict, boundaries { <patch> { type ...; } }"); }},
     };
     std::string text, valid;
     for (const auto& [name, list] : families) {

@@ -6,9 +6,9 @@
 
 namespace sph {
 
-// Every family, or the one named (kernel, density, viscosity, densityDiffusion, equationOfState,
-// boundary, motion, integrator, functionObject, analytic); std::invalid_argument naming the
-// valid ones for another name.
+// Every family, or the one named (kernel, density, viscosity, densityDiffusion, particleShifting,
+// equationOfState, boundary, motion, integrator, functionObject, analytic, fluidRegion,
+// wallPatch); std::invalid_argument naming the valid ones for another name.
 std::string modelCatalogue(const std::string& family = "");
 
 }  // namespace sph

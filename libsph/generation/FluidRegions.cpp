@@ -100,47 +100,70 @@ Vec<2> semiAxesOf(const Dictionary& region) {
     return axes;
 }
 
+const CoefficientDoc velocityDoc{"velocity", "(0 0 0)", "a vector, or an analytic solution's field at t = 0: { type taylorGreen; ... } (-listModels analytic)"};
+
 }  // namespace
+
+void shapeForOtherDimensions(const Dictionary& dict, const std::string& what, const std::string& dimensions, int D) {
+    throw FatalError(dict.entry("type").tokens().front().where,
+                     fmt::format("{} type '{}' is for {} cases; this case is {}D", what, dict.get<std::string>("type"), dimensions, D));
+}
+
+template <int D>
+FluidShapeRegistry<D> makeFluidShapeRegistry() {
+    FluidShapeRegistry<D> registry("fluid region type");
+    registry.add("box", {"the box's own lattice, anchored at min; an extent not a whole number of dx adjusts the last spacing (dx/2 to 3dx/2, with a note); 1D-3D",
+                         "",
+                         {{"min", "", "lower corner"}, {"max", "", "upper corner"}, velocityDoc}},
+                 [](const Dictionary& region, double dx, const GenerationDomain<D>&, std::vector<std::string>& notes) { return fillBox<D>(region, dx, notes); });
+    const auto ellipse = [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
+        if constexpr (D == 2) {
+            const Vec<2> centre = region.getVector<2>("centre");
+            const Vec<2> axes = semiAxesOf(region);
+            return fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) {
+                return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
+            });
+        } else {
+            shapeForOtherDimensions(region, "fluid region", "2D", D);
+        }
+    };
+    registry.add("circle", {"the domain's lattice points inside a circle; 2D", "", {{"centre", "", "(x y)"}, {"radius", "", "[m]"}, velocityDoc}}, ellipse);
+    registry.add("ellipse", {"the domain's lattice points inside an ellipse; 2D", "", {{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, velocityDoc}}, ellipse);
+    registry.add("polygon", {"the domain's lattice points inside a closed polygon; 2D", "", {{"points", "", "((x y) ...), at least 3"}, velocityDoc}},
+                 [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
+                     if constexpr (D == 2) {
+                         const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
+                         if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
+                         return fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insideLoop(polygon, x); });
+                     } else {
+                         shapeForOtherDimensions(region, "fluid region", "2D", D);
+                     }
+                 });
+    registry.add("surface",
+                 {"the domain's lattice points inside a closed surface from a file: 3D an STL or OBJ surface; 2D OBJ polylines, or a surface cut at z = slice; 2D, 3D",
+                  "",
+                  {{"file", "", "STL or OBJ, relative to the case"}, {"scale", "1", "multiplies the file's coordinates"}, {"slice", "0", "2D: z of the cut through a surface"}, velocityDoc}},
+                 [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
+                     if constexpr (D >= 2) return fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
+                     else shapeForOtherDimensions(region, "fluid region", "2D and 3D", D);
+                 });
+    return registry;
+}
 
 template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const GenerationDomain<D>& domain) {
-    const std::string type = region.get<std::string>("type");
     FluidRegionParticles<D> result;
     if (const Dictionary* field = region.findSubDict("velocity"))
         result.initialField = selectByType(makeAnalyticSolutionRegistry<D>(), *field, *field);
     else if (region.found("velocity"))
         result.velocity = region.getVector<D>("velocity");
-    if (type == "box") {
-        result.positions = fillBox<D>(region, dx, result.notes);
-        return result;
-    }
-    if constexpr (D == 2) {
-        if (type == "ellipse" || type == "circle") {
-            const Vec<2> centre = region.getVector<2>("centre");
-            const Vec<2> axes = semiAxesOf(region);
-            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) {
-                return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
-            });
-            return result;
-        }
-        if (type == "polygon") {
-            const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
-            if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
-            result.positions = fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insideLoop(polygon, x); });
-            return result;
-        }
-    }
-    if constexpr (D >= 2) {
-        if (type == "surface") {
-            result.positions = fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
-            return result;
-        }
-    }
-    const std::string valid = D == 2 ? "box, circle, ellipse, polygon, surface" : D == 3 ? "box, surface" : "box";
-    throw FatalError(region.entry("type").tokens().front().where,
-                     fmt::format("unknown fluid region type '{}' for a {}D case; valid types are: {}", type, D, valid));
+    result.positions = selectByType(makeFluidShapeRegistry<D>(), region, region, dx, domain, result.notes);
+    return result;
 }
 
+template FluidShapeRegistry<1> makeFluidShapeRegistry<1>();
+template FluidShapeRegistry<2> makeFluidShapeRegistry<2>();
+template FluidShapeRegistry<3> makeFluidShapeRegistry<3>();
 template FluidRegionParticles<1> fillFluidRegion<1>(const Dictionary&, double, const GenerationDomain<1>&);
 template FluidRegionParticles<2> fillFluidRegion<2>(const Dictionary&, double, const GenerationDomain<2>&);
 template FluidRegionParticles<3> fillFluidRegion<3>(const Dictionary&, double, const GenerationDomain<3>&);

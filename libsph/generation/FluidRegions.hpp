@@ -15,6 +15,7 @@
 #pragma once
 
 #include "analytic/AnalyticSolution.hpp"
+#include "core/Registry.hpp"
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
 
@@ -41,6 +42,17 @@ struct GenerationDomain {
     Vec<D> min, max;
     std::filesystem::path caseDirectory;
 };
+
+// A shape declared for other dimensions than the case's (`what`: "fluid region", "wall patch"),
+// reported at its `type` word.
+[[noreturn]] void shapeForOtherDimensions(const Dictionary& dict, const std::string& what, const std::string& dimensions, int D);
+
+// The fluid region shapes, selected by `type` (each declared once, with its keywords, for the
+// generator and -listModels); a shape fills the lattice points it holds and may add notes.
+template <int D>
+using FluidShapeRegistry = Registry<std::vector<Vec<D>>, const Dictionary&, double, const GenerationDomain<D>&, std::vector<std::string>&>;
+template <int D>
+FluidShapeRegistry<D> makeFluidShapeRegistry();
 
 template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const GenerationDomain<D>& domain);

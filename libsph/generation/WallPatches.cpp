@@ -2,6 +2,7 @@
 
 #include "generation/FluidRegions.hpp"
 #include "generation/SurfaceShapes.hpp"
+#include "io/SelectByType.hpp"
 
 #include <fmt/format.h>
 
@@ -347,25 +348,72 @@ WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>
     return {layers, patch.getNonNegativeOrDefault("firstLayerOffset", 0.5)};
 }
 
-template <int D>
-WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain) {
-    const std::string type = patch.get<std::string>("type");
-    const int layers = layout.layers;
-    const double offset = layout.firstLayerOffset;
-    if constexpr (D >= 2)
-        if (type == "surface") return surfaceWalls<D>(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
-    if (type == "boxWalls") return boxWalls<D>(patch, dx, layers, offset);
-    if (type == "box") return boxObstacle<D>(patch, dx, layers, offset);
-    if constexpr (D == 2) {
-        if (type == "polyline") return polyline(patch, dx, layers, offset);
-        if (type == "polygon") return polygon(patch, dx, layers, offset);
-        if (type == "ellipse" || type == "circle") return ellipse(patch, dx, layers, offset);
-    }
-    const std::string valid = D == 2 ? "box, boxWalls, circle, ellipse, polygon, polyline, surface" : D == 3 ? "box, boxWalls, surface" : "box, boxWalls";
-    throw FatalError(patch.entry("type").tokens().front().where,
-                     fmt::format("unknown wall patch type '{}' for a {}D case; valid types are: {}", type, D, valid));
+namespace {
+
+// The keywords every wall patch takes, after its own.
+std::vector<CoefficientDoc> withLayout(std::vector<CoefficientDoc> own) {
+    own.push_back({"layers", "model", "layers of wall particles; left out: what the patch's model in constant/boundaryProperties needs"});
+    own.push_back({"firstLayerOffset", "0.5", "the first layer's distance behind the wall [dx] (0: on it)"});
+    return own;
 }
 
+// A 2D-only shape's generation, as a registry factory.
+template <int D>
+auto planar(WallPatchParticles<2> (*generate)(const Dictionary&, double, int, double)) {
+    return [generate](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) -> WallPatchParticles<D> {
+        if constexpr (D == 2) return generate(patch, dx, layout.layers, layout.firstLayerOffset);
+        else shapeForOtherDimensions(patch, "wall patch", "2D", D);
+    };
+}
+
+}  // namespace
+
+template <int D>
+WallPatchRegistry<D> makeWallPatchRegistry() {
+    WallPatchRegistry<D> registry("wall patch type");
+    registry.add("boxWalls",
+                 {"the shell around a box, the lattice continued outwards, corners included; any extent (the last spacing along a face adjusted); 1D-3D", "",
+                  withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}, {"open", "()", "faces left open: (xMin xMax yMin yMax zMin zMax)"}})},
+                 [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) {
+                     return boxWalls<D>(patch, dx, layout.layers, layout.firstLayerOffset);
+                 });
+    registry.add("box", {"a solid obstacle: its lattice `layers` deep from each face, normals out of the nearest face; 1D-3D", "",
+                         withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}})},
+                 [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) {
+                     return boxObstacle<D>(patch, dx, layout.layers, layout.firstLayerOffset);
+                 });
+    registry.add("polyline", {"an open path of straight faces, particles at their spacings' centres, corners filled behind a convex turn; 2D", "",
+                              withLayout({{"points", "", "((x y) ...), at least 2"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
+                 planar<D>(polyline));
+    registry.add("polygon", {"a closed path of straight faces, a particle on every vertex (bisector normal); 2D", "",
+                             withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
+                 planar<D>(polygon));
+    const std::vector<CoefficientDoc> fluidInside{{"fluidInside", "", "yes: a tank; no: a solid body the fluid regions leave out"}};
+    registry.add("circle", {"a circle at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"radius", "", "[m]"}, fluidInside[0]})}, planar<D>(ellipse));
+    registry.add("ellipse", {"an ellipse at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, fluidInside[0]})},
+                 planar<D>(ellipse));
+    registry.add("surface",
+                 {"a closed surface from a file (3D: STL or OBJ; 2D: OBJ polylines or a surface cut at z = slice): one layer sampled on it, more the lattice behind it; 2D, 3D",
+                  "",
+                  withLayout({{"file", "", "STL or OBJ, relative to the case"},
+                              {"scale", "1", "multiplies the file's coordinates"},
+                              {"slice", "0", "2D: z of the cut through a surface"},
+                              fluidInside[0]})},
+                 [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain) -> WallPatchParticles<D> {
+                     if constexpr (D >= 2) return surfaceWalls<D>(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
+                     else shapeForOtherDimensions(patch, "wall patch", "2D and 3D", D);
+                 });
+    return registry;
+}
+
+template <int D>
+WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain) {
+    return selectByType(makeWallPatchRegistry<D>(), patch, patch, dx, layout, domain);
+}
+
+template WallPatchRegistry<1> makeWallPatchRegistry<1>();
+template WallPatchRegistry<2> makeWallPatchRegistry<2>();
+template WallPatchRegistry<3> makeWallPatchRegistry<3>();
 template WallPatchParticles<1> generateWallPatch<1>(const Dictionary&, double, const WallLayout&, const GenerationDomain<1>&);
 template WallPatchParticles<2> generateWallPatch<2>(const Dictionary&, double, const WallLayout&, const GenerationDomain<2>&);
 template WallPatchParticles<3> generateWallPatch<3>(const Dictionary&, double, const WallLayout&, const GenerationDomain<3>&);

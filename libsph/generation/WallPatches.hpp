@@ -85,6 +85,13 @@ WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>
 void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, bool closed, double sign, double dx, int layers, double offset,
                  WallPatchParticles<2>& walls);
 
+// The wall patch shapes, selected by `type` (each declared once, with its keywords, for the
+// generator and -listModels).
+template <int D>
+using WallPatchRegistry = Registry<WallPatchParticles<D>, const Dictionary&, double, const WallLayout&, const GenerationDomain<D>&>;
+template <int D>
+WallPatchRegistry<D> makeWallPatchRegistry();
+
 template <int D>
 WallPatchParticles<D> generateWallPatch(const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain);
 

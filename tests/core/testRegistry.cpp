@@ -82,10 +82,14 @@ TEST(ModelCatalogue, ListsOneFamilyByNameAndNamesTheValidOnes) {
     EXPECT_EQ(motions.find("motion ("), 0u);
     EXPECT_EQ(motions.find("kernel ("), std::string::npos);
     EXPECT_NE(sph::modelCatalogue("boundary").find("deficiencyCorrectionBoundaryIntegral"), std::string::npos);
+    // The generator's shapes, with their keywords.
+    EXPECT_NE(sph::modelCatalogue("wallPatch").find("polyline"), std::string::npos);
+    EXPECT_NE(sph::modelCatalogue("wallPatch").find("firstLayerOffset"), std::string::npos);
+    EXPECT_NE(sph::modelCatalogue("fluidRegion").find("slice"), std::string::npos);
     // Every family alone, and the whole catalogue is their sum.
     std::string all;
     for (const char* family : {"kernel", "density", "viscosity", "densityDiffusion", "particleShifting", "equationOfState", "boundary", "motion",
-                               "integrator", "functionObject", "analytic"})
+                               "integrator", "functionObject", "analytic", "fluidRegion", "wallPatch"})
         all += sph::modelCatalogue(family);
     EXPECT_EQ(all, sph::modelCatalogue());
     try {
@@ -93,6 +97,6 @@ TEST(ModelCatalogue, ListsOneFamilyByNameAndNamesTheValidOnes) {
         ADD_FAILURE() << "no error for an unknown family";
     } catch (const std::invalid_argument& e) {
         EXPECT_EQ(std::string(e.what()), "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion particleShifting "
-                                         "equationOfState boundary motion integrator functionObject analytic");
+                                         "equationOfState boundary motion integrator functionObject analytic fluidRegion wallPatch");
     }
 }

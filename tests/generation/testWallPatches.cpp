@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 using namespace sph;
 
@@ -418,4 +419,23 @@ TEST(WallPatches, APatchWithoutLayersTakesItsModelsLayoutAndItsOwnOffset) {
     const WallLayout offset = wallLayout(Dictionary::fromString("type boxWalls; min (0 0); max (1 1); firstLayerOffset 0.25;", "tank"), fromModel);
     EXPECT_EQ(offset.layers, 4);
     EXPECT_EQ(offset.firstLayerOffset, 0.25);
+}
+
+TEST(WallPatches, AShapeOfAnotherDimensionOrAnUnknownOneIsRefusedAtItsType) {
+    const auto failure = [](const std::string& text, auto dimension) {
+        constexpr int D = decltype(dimension)::value;
+        try {
+            generateWithItsLayers<D>(Dictionary::fromString(text, "tank"), 0.1, anywhere<D>);
+        } catch (const FatalError& error) {
+            return std::string(error.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(failure("type polyline; points ((0 0) (1 0)); layers 1;", std::integral_constant<int, 3>{}).find("wall patch type 'polyline' is for 2D cases; this case is 3D"),
+              std::string::npos);
+    EXPECT_NE(failure("type surface; file \"a.obj\"; layers 1; fluidInside yes;", std::integral_constant<int, 1>{}).find("is for 2D and 3D cases; this case is 1D"),
+              std::string::npos);
+    const std::string unknown = failure("type polyLine; points ((0 0) (1 0)); layers 1;", std::integral_constant<int, 2>{});
+    EXPECT_NE(unknown.find("unknown wall patch type 'polyLine'"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("did you mean 'polyline'?"), std::string::npos) << unknown;
 }

@@ -108,9 +108,9 @@ add("unknown name", "calibration `wallPresure`",
      edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "wallPresure")
 add("unknown name", "motion `wobble`", [edit(BOUNDARY, "noSlip yes; }", "noSlip yes; motion { type wobble; } }")], "wobble")
 add("unknown name", "function object `surgeFrnt`", [edit(CONTROL, "type            surgeFront;", "type            surgeFrnt;")], "surgeFrnt")
-add("unknown name", "wall patch type `cylinder`", [edit(PARTICLES, "type boxWalls;", "type cylinder;")], "unknown wall patch type 'cylinder' for a 2D case")
+add("unknown name", "wall patch type `cylinder`", [edit(PARTICLES, "type boxWalls;", "type cylinder;")], "unknown wall patch type 'cylinder'; valid wall patch type names are:")
 add("unknown name", "fluid region type `sphere`", [edit(PARTICLES, "column  { type box;", "column  { type sphere;")],
-    "unknown fluid region type 'sphere' for a 2D case")
+    "unknown fluid region type 'sphere'; valid fluid region type names are:")
 add("unknown name", "periodic direction `w`", [edit(PARTICLES, "max (0.43 0.2); }", "max (0.43 0.2); periodic (w); }")],
     "unknown direction 'w'; valid directions are: x y")
 add("unknown name", "`startFrom firstTime`", [edit(CONTROL, "startFrom       latestTime;", "startFrom       firstTime;")],
