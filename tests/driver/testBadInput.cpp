@@ -220,7 +220,7 @@ TEST(BadInput, TruncatedStateFile) {
 
 TEST(BadInput, CorruptFreeBodyRestartState) {
     const auto dir = copyCase("sinkingCylinder2D");
-    replaceInFile(dir / "system/generateParticlesDict", "spacing     0.01;", "spacing     0.02;");
+    replaceInFile(dir / "system/caseParameters", "dx          0.01;", "dx          0.02;");
     replaceInFile(dir / "system/controlDict", "endTime         0.3;", "endTime         0.02;");
     sph::generateParticles(dir, true);
     sph::runCase(dir);

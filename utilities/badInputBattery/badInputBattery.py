@@ -300,12 +300,12 @@ def prepare(work, entry):
     shutil.rmtree(case, ignore_errors=True)
     source = os.path.join(ROOT, "cases", entry["case"])
     shutil.copytree(source, case, ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "variants", "log.*", "*.png"))
-    coarse = {"damBreak2D": ("0.00142875;", "0.0028575;"), "hydrostaticTank2D": None, "sinkingCylinder2D": ("0.01;", "0.02;")}[entry["case"]]
-    particles = os.path.join(case, PARTICLES)
-    text = open(particles).read()
+    coarse = {"damBreak2D": (PARTICLES, "spacing     0.00142875;", "spacing     0.0028575;"), "hydrostaticTank2D": None,
+              "sinkingCylinder2D": ("system/caseParameters", "dx          0.01;", "dx          0.02;")}[entry["case"]]
     if coarse:
-        text = text.replace("spacing     " + coarse[0], "spacing     " + coarse[1], 1)
-    write(particles, text)
+        text = open(os.path.join(case, coarse[0])).read()
+        assert coarse[1] in text, (entry["case"], coarse)
+        write(os.path.join(case, coarse[0]), text.replace(coarse[1], coarse[2], 1))
     control = os.path.join(case, CONTROL)
     endTime = re.search(r"\nendTime\s+[^;]+;", open(control).read()).group(0)
     generated = False

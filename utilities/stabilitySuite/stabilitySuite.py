@@ -63,9 +63,8 @@ def poiseuille(factor):
 def freeBody(ratio):
     mass = 1000 * ratio * math.pi * 0.01
     return ("free cylinder, density ratio %g" % ratio, "sinkingCylinder2D",
-            {"system/generateParticlesDict": [("spacing     0.01;", "spacing     0.02;")],
-             "constant/boundaryProperties": [("mass 62.832; momentOfInertia 0.31416;", "mass %.6g; momentOfInertia %.6g;" % (mass, mass * 0.005)),
-                                             ("r0 0.005;", "r0 0.01;")],  # the repulsion's reach is dx/2
+            {"system/caseParameters": [("dx          0.01;", "dx          0.02;")],  # the repulsion's reach r0 = dx/2 follows
+             "constant/boundaryProperties": [("mass 62.832; momentOfInertia 0.31416;", "mass %.6g; momentOfInertia %.6g;" % (mass, mass * 0.005))],
              "system/controlDict": [("endTime         0.3;", "endTime         0.2;")]},
             "", None, None)
 
