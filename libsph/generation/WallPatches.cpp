@@ -241,6 +241,7 @@ void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, boo
     const std::size_t m = faces.size();
     const auto convex = [](const PathFace& a, const PathFace& b) { return b.tangent.dot(a.normal) > 0.0; };
     const double firstPoint = closed ? 0.0 : 0.5;  // in spacings from the face's start
+    const double cornerGap = 1.0 - firstPoint;     // in spacings: from a corner to the nearest particle of each face
     // Each face's particles, layer by layer; on a polygon the vertex at its start comes first
     // (where the wall's side is convex the corner's fill takes its place).
     std::vector<std::vector<PathParticle>> ofFace(m);
@@ -269,26 +270,20 @@ void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, boo
                 if (p.layer == layer && p.kept) walls.add(p.x, p.normal, p.spacing, layer, p.area);
             const PathFace& next = faces[(s + 1) % m];
             if (s < corners && depth > 0.0 && convex(faces[s], next))
-                fillConvexCorner(faces[s], next, depth, (1.0 - firstPoint) * faces[s].spacing, (closed ? 1.0 : 0.5) * next.spacing, dx, layer, walls);
+                fillConvexCorner(faces[s], next, depth, cornerGap * faces[s].spacing, cornerGap * next.spacing, dx, layer, walls);
         }
     }
 }
 
 namespace {
 
-WallPatchParticles<2> polyline(const Dictionary& patch, double dx, int layers, double offset) {
+// A polyline (open) or polygon (closed) patch: its points and side, laid by addWallPath.
+template <bool Closed>
+WallPatchParticles<2> wallPathPatch(const Dictionary& patch, double dx, int layers, double offset) {
     const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
-    if (points.size() < 2) patch.fail("points", "a polyline needs at least 2 points");
+    if (points.size() < (Closed ? 3u : 2u)) patch.fail("points", Closed ? "a polygon needs at least 3 points" : "a polyline needs at least 2 points");
     WallPatchParticles<2> walls;
-    addWallPath(patch, points, false, sideSign(patch), dx, layers, offset, walls);
-    return walls;
-}
-
-WallPatchParticles<2> polygon(const Dictionary& patch, double dx, int layers, double offset) {
-    const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
-    if (points.size() < 3) patch.fail("points", "a polygon needs at least 3 points");
-    WallPatchParticles<2> walls;
-    addWallPath(patch, points, true, sideSign(patch), dx, layers, offset, walls);
+    addWallPath(patch, points, Closed, sideSign(patch), dx, layers, offset, walls);
     return walls;
 }
 
@@ -384,10 +379,10 @@ WallPatchRegistry<D> makeWallPatchRegistry() {
                  });
     registry.add("polyline", {"an open path of straight faces, particles at their spacings' centres, corners filled behind a convex turn; 2D", "",
                               withLayout({{"points", "", "((x y) ...), at least 2"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
-                 planar<D>(polyline));
+                 planar<D>(wallPathPatch<false>));
     registry.add("polygon", {"a closed path of straight faces, a particle on every vertex (bisector normal); 2D", "",
                              withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
-                 planar<D>(polygon));
+                 planar<D>(wallPathPatch<true>));
     const std::vector<CoefficientDoc> fluidInside{{"fluidInside", "", "yes: a tank; no: a solid body the fluid regions leave out"}};
     registry.add("circle", {"a circle at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"radius", "", "[m]"}, fluidInside[0]})}, planar<D>(ellipse));
     registry.add("ellipse", {"an ellipse at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, fluidInside[0]})},

@@ -41,7 +41,7 @@ ClosedCurves ClosedCurves::read(const std::filesystem::path& file, double scale,
     auto stripper = vtkSmartPointer<vtkStripper>::New();
     stripper->SetInputData(segments);
     stripper->JoinContiguousSegmentsOn();
-    stripper->SetMaximumLength(std::numeric_limits<int>::max() / 4);
+    stripper->SetMaximumLength(std::numeric_limits<int>::max() / 4);  // VTK's default (1000 points) would cut a long loop open
     stripper->Update();
     vtkPolyData* joined = stripper->GetOutput();
     ClosedCurves result;
