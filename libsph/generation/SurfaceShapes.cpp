@@ -18,22 +18,15 @@ namespace sph {
 
 namespace {
 
-std::shared_ptr<const TriangleSurface> readSurface(const Dictionary& dict, const std::filesystem::path& caseDirectory) {
-    const std::string file = dict.get<std::string>("file");
+// The closed surface (3D) or curves (2D) a dictionary's `file` names, scaled by `scale`; 2D
+// cuts a surface at z = `slice`. A reading error is reported at the `file` keyword.
+template <int D>
+auto readBoundary(const Dictionary& dict, const std::filesystem::path& caseDirectory) {
+    const std::filesystem::path file = caseDirectory / dict.get<std::string>("file");
     const double scale = dict.getPositiveOrDefault("scale", 1.0);
     try {
-        return std::make_shared<const TriangleSurface>(TriangleSurface::read(caseDirectory / file, scale));
-    } catch (const FatalError& error) {
-        dict.fail("file", error.what());
-    }
-}
-
-std::shared_ptr<const ClosedCurves> readCurves(const Dictionary& dict, const std::filesystem::path& caseDirectory) {
-    const std::string file = dict.get<std::string>("file");
-    const double scale = dict.getPositiveOrDefault("scale", 1.0);
-    const double slice = dict.getOrDefault<double>("slice", 0.0);
-    try {
-        return std::make_shared<const ClosedCurves>(ClosedCurves::read(caseDirectory / file, scale, slice));
+        if constexpr (D == 2) return std::make_shared<const ClosedCurves>(ClosedCurves::read(file, scale, dict.getOrDefault<double>("slice", 0.0)));
+        else return std::make_shared<const TriangleSurface>(TriangleSurface::read(file, scale));
     } catch (const FatalError& error) {
         dict.fail("file", error.what());
     }
@@ -195,10 +188,7 @@ Vec<D> normalOnSurface(const Surface& surface, const Vec<D>& x, double dx, bool 
 template <int D>
 std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<D>& domainMin,
                                 const Vec<D>& domainMax) {
-    const auto surface = [&] {
-        if constexpr (D == 2) return readCurves(region, caseDirectory);
-        else return readSurface(region, caseDirectory);
-    }();
+    const auto surface = readBoundary<D>(region, caseDirectory);
     std::vector<Vec<D>> points;
     forEachLatticePointWithin<D>(domainMin, domainMax, dx, surface->lower(), surface->upper(), [&](const Vec<D>& x) {
         if (surface->inside(x) && !onSurface(*surface, x, dx)) points.push_back(x);
@@ -236,10 +226,7 @@ template <int D>
 WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,
                                    const Vec<D>& domainMin, const Vec<D>& domainMax) {
     const int layers = layout.layers;
-    const auto surface = [&] {
-        if constexpr (D == 2) return readCurves(patch, caseDirectory);
-        else return readSurface(patch, caseDirectory);
-    }();
+    const auto surface = readBoundary<D>(patch, caseDirectory);
     const bool fluidInside = patch.get<bool>("fluidInside");
     WallPatchParticles<D> walls;
     if (layers == 1) {
