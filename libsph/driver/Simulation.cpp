@@ -7,6 +7,7 @@
 #include "driver/RestartState.hpp"
 #include "driver/RunControls.hpp"
 #include "driver/StopRequest.hpp"
+#include "driver/Threads.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/ParticleCsv.hpp"
@@ -86,9 +87,11 @@ void reportErrorAgainstCost(const std::vector<FunctionObjectEntry<D>>& functionO
 }
 
 template <int D>
-void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode) {
+void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode,
+         std::optional<int> threads) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
+    const RunThreads runThreads(system.fluid.size() + system.walls.size(), threads);
     TimeIntegrator<D>& integrator = *setup.integrator;
     // The exact time from the state file: a directory name holds only its first digits.
     const double startTime = setup.header.time;
@@ -231,7 +234,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
 }  // namespace
 
-void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes) {
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes, std::optional<int> threads) {
     if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
     const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
     controlDict.findEntry("application");  // informational, as in OpenFOAM
@@ -251,13 +254,13 @@ void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool over
     const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
     switch (dimension) {
 #ifdef SPHKIT_HAS_1D
-        case 1: return run<1>(caseDirectory, controlDict, start, mode);
+        case 1: return run<1>(caseDirectory, controlDict, start, mode, threads);
 #endif
 #ifdef SPHKIT_HAS_2D
-        case 2: return run<2>(caseDirectory, controlDict, start, mode);
+        case 2: return run<2>(caseDirectory, controlDict, start, mode, threads);
 #endif
 #ifdef SPHKIT_HAS_3D
-        case 3: return run<3>(caseDirectory, controlDict, start, mode);
+        case 3: return run<3>(caseDirectory, controlDict, start, mode, threads);
 #endif
         default: break;
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 namespace sph {
 
@@ -14,7 +15,9 @@ enum class RunMode {
 
 // Runs the case. Throws FatalError for bad input or a run that blows up, and when times later
 // than the start time exist (startFrom startTime): the run would overwrite them, unless
-// `overwriteLaterTimes` (wcsph -overwrite), which removes them first.
-void runCase(const std::filesystem::path& caseDirectory, RunMode mode = RunMode::TimeLoop, bool overwriteLaterTimes = false);
+// `overwriteLaterTimes` (wcsph -overwrite), which removes them first. `threads` (wcsph -threads)
+// replaces the rule of driver/Threads.hpp.
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode = RunMode::TimeLoop, bool overwriteLaterTimes = false,
+             std::optional<int> threads = std::nullopt);
 
 }  // namespace sph

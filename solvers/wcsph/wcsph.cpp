@@ -3,10 +3,12 @@
 #include "driver/ModelCatalogue.hpp"
 #include "driver/Simulation.hpp"
 #include "core/ExitOnError.hpp"
+#include "driver/Threads.hpp"
 
 #include <fmt/format.h>
 
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -29,20 +31,40 @@ Options:
                   as .vtu and .csv
   -overwrite      with startFrom startTime: remove the times after the start time that an
                   earlier run wrote (without it the solver refuses to overwrite them)
+  -threads <N>    run on N threads (default: one per 3,000 particles, at most OMP_NUM_THREADS
+                  or the cores)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
 system/generateParticlesDict. Ctrl-C or SIGTERM finishes the current step, writes the state
 and exits; running again continues from the latest written time (startFrom latestTime).
+Unless OMP_WAIT_POLICY or GOMP_SPINCOUNT is set, the solver starts itself again with
+GOMP_SPINCOUNT=300, so that a thread waiting for another does not take the core it needs on a
+shared machine (doc/performance.md).
 See doc/userGuide.md and doc/reliability.md.
 )";
+
+// A whole number of threads from 1 to 4096, or nothing.
+std::optional<int> parseThreadCount(const std::string& text) {
+    std::size_t used = 0;
+    int threads = 0;
+    try {
+        threads = std::stoi(text, &used);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (used != text.size() || threads < 1 || threads > 4096) return std::nullopt;
+    return threads;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    sph::boundSpinWaiting(argv);
     std::string caseDirectory = ".";
     sph::RunMode mode = sph::RunMode::TimeLoop;
     bool overwrite = false;
+    std::optional<int> threads;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-help" || arg == "--help" || arg == "-h") {
@@ -67,6 +89,14 @@ int main(int argc, char** argv) {
             overwrite = true;
             continue;
         }
+        if (arg == "-threads" && i + 1 < argc) {
+            threads = parseThreadCount(argv[++i]);
+            if (!threads) {
+                fmt::print(stderr, "error: -threads takes a whole number from 1 to 4096, found '{}'\n", argv[i]);
+                return 2;
+            }
+            continue;
+        }
         if (arg == "-case" && i + 1 < argc) {
             caseDirectory = argv[++i];
             continue;
@@ -74,5 +104,5 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
     }
-    return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode, overwrite); });
+    return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode, overwrite, threads); });
 }

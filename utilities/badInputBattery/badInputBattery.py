@@ -279,6 +279,10 @@ add("command line", "`wcsph -case` without a directory", [], "unknown or incompl
     outcome="refused")
 add("command line", "`wcsph -listModels kernels`", [], "unknown model family 'kernels'; valid: kernel density", tools=("wcsph",),
     arguments=("-listModels", "kernels"), outcome="refused")
+add("command line", "`wcsph -threads 0`", [], "-threads takes a whole number from 1 to 4096, found '0'", tools=("wcsph",),
+    arguments=("-threads", "0"), outcome="refused")
+add("command line", "`wcsph -threads two`", [], "-threads takes a whole number from 1 to 4096, found 'two'", tools=("wcsph",),
+    arguments=("-threads", "two"), outcome="refused")
 add("command line", "`generateParticles -force`", [], "unknown or incomplete option '-force'", tools=("generateParticles",), arguments=("-force",),
     outcome="refused")
 
