@@ -13,22 +13,29 @@ template <int D>
 BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
     BoundaryModelRegistry<D> registry("boundary model");
     registry.add("dummyParticles",
-                 {"fixed dummy particles, pressure extrapolated from the fluid", "Adami, Hu & Adams, J. Comput. Phys. 231 (2012) 7057",
+                 {"fixed dummy particles, pressure extrapolated from the fluid",
+                  "Adami, Hu & Adams, J. Comput. Phys. 231 (2012) 7057",
                   {{"noSlip", "yes", "viscous wall velocity 2 v_w - v~ (yes) or v~ (no, free slip)"},
                    {"clampNegativePressure", "yes", "wall pressure never below the background pressure"}}},
-                 [](const Dictionary& dict, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DummyParticlesAdami2012<D>>(dict); });
-    registry.add("dynamicBoundary", {"wall particles with continuity density and EOS pressure", "Crespo, Gomez-Gesteira & Dalrymple, CMC 5 (2007) 173", {}},
-                 [](const Dictionary&, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DynamicBoundaryCrespo2007<D>>(); });
+                 [](const Dictionary& dict, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<DummyParticlesAdami2012<D>>(dict);
+                 });
+    registry.add(
+        "dynamicBoundary", {"wall particles with continuity density and EOS pressure", "Crespo, Gomez-Gesteira & Dalrymple, CMC 5 (2007) 173", {}},
+        [](const Dictionary&, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DynamicBoundaryCrespo2007<D>>(); });
     const CoefficientDoc K{"K", "", "squared velocity, ~ g H (kernel normalised to 1 at contact)"};
     const CoefficientDoc form{"form", "square", "square: r/|r|^2; shifted: r/(|r| max(|r| - shift, 0.1 dx))"};
     const CoefficientDoc shift{"shift", "dx/2", "with form shifted: distance of the singularity"};
-    registry.add("monaghanKajtar", {"repulsive force (K/beta) r/|r|^2 W/W(0) 2m_k/(m_a + m_k)", "Monaghan & Kajtar, Comput. Phys. Commun. 180 (2009) 1811",
-                                    {K, form, shift}},
-                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
-                     return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
-                 });
-    registry.add("lennardJones", {"Dc [(r0/r)^p1 - (r0/r)^p2] r/r^2 for r < r0", "Monaghan, J. Comput. Phys. 110 (1994) 399",
-                                  {{"Dc", "", "squared velocity, ~ 5 g H"}, {"r0", "dx", "range"}, {"p1", "12", ""}, {"p2", "4", ""}}},
+    registry.add(
+        "monaghanKajtar",
+        {"repulsive force (K/beta) r/|r|^2 W/W(0) 2m_k/(m_a + m_k)", "Monaghan & Kajtar, Comput. Phys. Commun. 180 (2009) 1811", {K, form, shift}},
+        [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+            return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
+        });
+    registry.add("lennardJones",
+                 {"Dc [(r0/r)^p1 - (r0/r)^p2] r/r^2 for r < r0",
+                  "Monaghan, J. Comput. Phys. 110 (1994) 399",
+                  {{"Dc", "", "squared velocity, ~ 5 g H"}, {"r0", "dx", "range"}, {"p1", "12", ""}, {"p2", "4", ""}}},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
                      return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
                  });
@@ -41,8 +48,9 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
         {"direction", "normal", "normal (n_j) or radial (r_ij/|r_ij|)"},
         {"sample", "{ type nearest; size 4; }", "calibrated and literal: or { type withinRadius; radius r; }"},
         {"temporalSmoothing", "1", "calibrated and literal: lambda of C_j <- (1 - lambda) C_j + lambda C_j^new, in (0, 1]"}};
-    registry.add("deficiencyCorrection", {"boundary deficiency correction, published weighting, one layer on the wall",
-                                          "Jones, Yang & McCue-Weil, Ship Sci. & Tech. 4(7) (2010) 21", correction},
+    registry.add("deficiencyCorrection",
+                 {"boundary deficiency correction, published weighting, one layer on the wall",
+                  "Jones, Yang & McCue-Weil, Ship Sci. & Tech. 4(7) (2010) 21", correction},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
                      return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingJones2010>>(dict, context, "deficiencyCorrection");
                  });
@@ -51,7 +59,7 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                   "sphkit; METHOD.md open improvements", correction},
                  [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
                      return std::make_unique<DeficiencyCorrection<D, DeficiencyWeightingBoundaryIntegral>>(dict, context,
-                                                                                                         "deficiencyCorrectionBoundaryIntegral");
+                                                                                                           "deficiencyCorrectionBoundaryIntegral");
                  });
     return registry;
 }

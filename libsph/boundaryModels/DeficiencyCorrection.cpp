@@ -71,8 +71,9 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
     const bool sampled = calibration_ != DeficiencyCalibration::WallPressure;
     const auto onlySampled = [&](const std::string& keyword) {
         if (!sampled && dict.found(keyword))
-            dict.fail(keyword, "applies to calibration calibrated or literal; calibration wallPressure takes every fluid particle within the "
-                               "kernel support of a wall particle and has no history to smooth");
+            dict.fail(keyword,
+                      "applies to calibration calibrated or literal; calibration wallPressure takes every fluid particle within the "
+                      "kernel support of a wall particle and has no history to smooth");
     };
     onlySampled("sample");
     onlySampled("temporalSmoothing");
@@ -96,14 +97,14 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
 
 template <int D, class Weighting>
 std::string DeficiencyCorrection<D, Weighting>::describe() const {
-    std::string text = fmt::format("{}: calibration {}, direction {}", typeName_, calibrationName(calibration_), radialDirection_ ? "radial" : "normal");
+    std::string text =
+        fmt::format("{}: calibration {}, direction {}", typeName_, calibrationName(calibration_), radialDirection_ ? "radial" : "normal");
     if (calibration_ != DeficiencyCalibration::WallPressure)
         text += fmt::format(", sample {}, temporalSmoothing {:g}",
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
     return text + ", repulsion " +
            (repulsion_ ? sph::describe(*repulsion_)
-                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}", penalty_.K,
-                                     penalty_.zeta, penalty_.distance));
+                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}", penalty_.K, penalty_.zeta, penalty_.distance));
 }
 
 template <int D, class Weighting>
@@ -119,9 +120,9 @@ template <int D, class Weighting>
 void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) {
     // All zero: the state was written with another model on this patch; start afresh.
     const auto& C = system.walls.scalar("correctionCoefficient");
-    repeatWrittenCoefficients_ = calibration_ != DeficiencyCalibration::WallPressure &&
-                                 std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end),
-                                             [](double c) { return c != 0.0; });
+    repeatWrittenCoefficients_ =
+        calibration_ != DeficiencyCalibration::WallPressure &&
+        std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end), [](double c) { return c != 0.0; });
     firstEvaluation_ = !repeatWrittenCoefficients_;
 }
 
@@ -255,8 +256,7 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(FluidSystem<D>& system
                 denominator += literal ? kernel.value(std::sqrt(r2)) : blend_[s].dot(normal[j]);
             }
             // Never attracting, never more than twice the virtual particles' push.
-            const double fresh =
-                denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
+            const double fresh = denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
             C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
             push_[j] = -C[j];
         }

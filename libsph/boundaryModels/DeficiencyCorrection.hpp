@@ -33,15 +33,12 @@
 // sampled particles' normal acceleration equal the wall's, so it also cancels the real
 // deceleration of fluid arriving at a wall (impacts blow up) and has no bound where the
 // sample's kernel sum is far from complete; without the continuity term fluid pressing on a
-// wall never compresses; without the gradient along the wall fluid beside a side wall sinks. p_j is bounded by the fluid's pressure and the hydrostatic offset
-// over r_inf whatever the sample, and C_j^p = -2 p/rho reproduces the paper's uniform-pressure
-// calibration with the boundary-integral weighting.
-// The walls' pressure and density fields hold p_j and rho_j (ParaView, wall sensors), and
-// correctionCoefficient the uniform-pressure coefficient C_j (-2 p_j R_j / rho_j with wallPressure).
-// Reference: V. Jones, Q. Yang, L. McCue-Weil, Ship Science & Technology 4(7) (2010) 21-30,
-// Eqs. (7), (8); S. Adami, X.Y. Hu, N.A. Adams, J. Comput. Phys. 231 (2012) 7057, Eq. (27);
-// the boundary integral as in Kulasegaram et al. (2004) and Ferrand et al. (2013).
-// Example (constant/boundaryProperties):
+// wall never compresses; without the gradient along the wall fluid beside a side wall sinks. p_j is bounded by the fluid's pressure and the
+// hydrostatic offset over r_inf whatever the sample, and C_j^p = -2 p/rho reproduces the paper's uniform-pressure calibration with the
+// boundary-integral weighting. The walls' pressure and density fields hold p_j and rho_j (ParaView, wall sensors), and correctionCoefficient the
+// uniform-pressure coefficient C_j (-2 p_j R_j / rho_j with wallPressure). Reference: V. Jones, Q. Yang, L. McCue-Weil, Ship Science & Technology
+// 4(7) (2010) 21-30, Eqs. (7), (8); S. Adami, X.Y. Hu, N.A. Adams, J. Comput. Phys. 231 (2012) 7057, Eq. (27); the boundary integral as in
+// Kulasegaram et al. (2004) and Ferrand et al. (2013). Example (constant/boundaryProperties):
 //   tank
 //   {
 //       type              deficiencyCorrection;     // or deficiencyCorrectionBoundaryIntegral
@@ -95,8 +92,10 @@ private:
     // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.
     template <bool Radial>
     static Vec<D> direction(const Vec<D>& normal, const Vec<D>& r, double distance) {
-        if constexpr (Radial) return r / distance;
-        else return normal;
+        if constexpr (Radial)
+            return r / distance;
+        else
+            return normal;
     }
 
     std::string typeName_;
@@ -116,7 +115,7 @@ private:
         double kernel;       // W_ij
         double blendWeight;  // W_ij w_ij
         double distance;
-        Vec<D> r;            // x_i - x_j, nearest image
+        Vec<D> r;  // x_i - x_j, nearest image
     };
     struct PairRange {
         std::uint32_t thread, begin, end;  // fluid particle i's pairs in that thread's list
@@ -128,8 +127,8 @@ private:
     std::vector<Vec<D>> blend_;          // c_i
     std::vector<Vec<D>> areaIntegral_;   // g_i, where it differs from c_i
     KernelOutsideFraction<D> outsideFraction_;
-    std::vector<double> push_;           // per wall particle: p_j R_j / rho_j, or -C_j
-    std::vector<double> virtualDensity_; // per wall particle: rho_j R_j
+    std::vector<double> push_;            // per wall particle: p_j R_j / rho_j, or -C_j
+    std::vector<double> virtualDensity_;  // per wall particle: rho_j R_j
 };
 
 }  // namespace sph

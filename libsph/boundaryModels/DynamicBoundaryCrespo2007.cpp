@@ -23,7 +23,8 @@ void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size
     // The wall particles in the order of their cell list, which has the fluid list's grid: the
     // particles of a wall cell share its stencil of fluid cells. Their fluid neighbours are listed
     // without a branch and, in 3D (many per wall particle), summed in vector lanes (AVX2: four
-    // doubles), as in the pair loop. Wall density rates 14-17 % faster than a branch per candidate.
+    // doubles), as in the pair loop (measured: doc/performance.md, "The dynamic boundary's pass in
+    // lanes").
     const auto& wallCells = system.wallCells();
     constexpr std::size_t lanes = D == 3 ? 4 : 1;
 
@@ -74,8 +75,10 @@ void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size
     };
     std::visit(
         [&](const auto& kernel) {
-            if (system.fluidCells().anyPeriodic()) densityRates(kernel, std::true_type{});
-            else densityRates(kernel, std::false_type{});
+            if (system.fluidCells().anyPeriodic())
+                densityRates(kernel, std::true_type{});
+            else
+                densityRates(kernel, std::false_type{});
         },
         system.models().kernel);
     std::visit(

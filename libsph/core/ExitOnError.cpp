@@ -18,7 +18,8 @@ std::string describeFilesystemError(const std::filesystem::filesystem_error& e) 
 namespace {
 
 bool stdoutIsItsOwnFile() {
-    struct stat out {}, err {};
+    struct stat out {
+    }, err{};
     if (::isatty(STDOUT_FILENO) || ::fstat(STDOUT_FILENO, &out) != 0) return false;
     return ::fstat(STDERR_FILENO, &err) != 0 || out.st_dev != err.st_dev || out.st_ino != err.st_ino;
 }

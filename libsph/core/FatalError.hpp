@@ -21,8 +21,7 @@ struct SourceLocation {
 class FatalError : public std::runtime_error {
 public:
     explicit FatalError(const std::string& message) : std::runtime_error(message) {}
-    FatalError(const SourceLocation& where, const std::string& message)
-        : std::runtime_error(where.str() + ": error: " + message) {}
+    FatalError(const SourceLocation& where, const std::string& message) : std::runtime_error(where.str() + ": error: " + message) {}
 };
 
 }  // namespace sph

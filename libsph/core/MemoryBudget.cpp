@@ -24,8 +24,8 @@ double availableMemoryBytes() {
 void requireMemory(double bytes, const std::string& what) {
     const double available = availableMemoryBytes();
     if (!(bytes <= available))
-        throw FatalError(fmt::format("error: {} would need {:.3g} GiB of memory; this machine has {:.3g} GiB available", what,
-                                     bytes / 1073741824.0, available / 1073741824.0));
+        throw FatalError(fmt::format("error: {} would need {:.3g} GiB of memory; this machine has {:.3g} GiB available", what, bytes / 1073741824.0,
+                                     available / 1073741824.0));
 }
 
 }  // namespace sph

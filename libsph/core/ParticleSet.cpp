@@ -58,17 +58,29 @@ std::vector<int>& ParticleSet<D>::addInteger(const std::string& field, int initi
 }
 
 template <int D>
-std::vector<double>& ParticleSet<D>::scalar(const std::string& field) { return fieldOf(scalars_, name_, field); }
+std::vector<double>& ParticleSet<D>::scalar(const std::string& field) {
+    return fieldOf(scalars_, name_, field);
+}
 template <int D>
-const std::vector<double>& ParticleSet<D>::scalar(const std::string& field) const { return fieldOf(scalars_, name_, field); }
+const std::vector<double>& ParticleSet<D>::scalar(const std::string& field) const {
+    return fieldOf(scalars_, name_, field);
+}
 template <int D>
-std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) { return fieldOf(vectors_, name_, field); }
+std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) {
+    return fieldOf(vectors_, name_, field);
+}
 template <int D>
-const std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) const { return fieldOf(vectors_, name_, field); }
+const std::vector<Vec<D>>& ParticleSet<D>::vector(const std::string& field) const {
+    return fieldOf(vectors_, name_, field);
+}
 template <int D>
-std::vector<int>& ParticleSet<D>::integer(const std::string& field) { return fieldOf(integers_, name_, field); }
+std::vector<int>& ParticleSet<D>::integer(const std::string& field) {
+    return fieldOf(integers_, name_, field);
+}
 template <int D>
-const std::vector<int>& ParticleSet<D>::integer(const std::string& field) const { return fieldOf(integers_, name_, field); }
+const std::vector<int>& ParticleSet<D>::integer(const std::string& field) const {
+    return fieldOf(integers_, name_, field);
+}
 
 template <int D>
 void ParticleSet<D>::permute(const std::vector<std::uint32_t>& order) {

@@ -37,6 +37,8 @@ struct Antuono2010 {
 
 // True for a diffusion whose pairs read the renormalised density gradient.
 template <class Diffusion>
-constexpr bool usesDensityGradient = requires { Diffusion::renormalisedGradient; };
+constexpr bool usesDensityGradient = requires {
+    Diffusion::renormalisedGradient;
+};
 
 }  // namespace sph

@@ -10,16 +10,20 @@ DensityDiffusionRegistry<D> makeDensityDiffusionRegistry() {
     DensityDiffusionRegistry<D> registry("densityDiffusion");
     registry.add("none", {"no density diffusion", "", {}},
                  [](const Dictionary&, const ModelContext&) { return DensityDiffusion<D>{NoDensityDiffusion{}}; });
-    registry.add("molteniColagrossi", {"delta-SPH diffusion of density differences", "Molteni & Colagrossi, Comput. Phys. Commun. 180 (2009) 861", {delta}},
+    registry.add("molteniColagrossi",
+                 {"delta-SPH diffusion of density differences", "Molteni & Colagrossi, Comput. Phys. Commun. 180 (2009) 861", {delta}},
                  [](const Dictionary& dict, const ModelContext& c) {
                      return DensityDiffusion<D>{MolteniColagrossi2009(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0)};
                  });
-    registry.add("fourtakas", {"diffusion of the dynamic density (hydrostatic part removed)", "Fourtakas et al., Comput. Fluids 190 (2019) 346", {delta}},
-                 [](const Dictionary& dict, const ModelContext& c) {
-                     return DensityDiffusion<D>{Fourtakas2019<D>(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0, c.rho0, c.stiffness, c.exponent)};
-                 });
-    registry.add("antuono", {"delta-SPH diffusion with the renormalised density gradient (a hydrostatic gradient is not diffused)",
-                             "Antuono et al., Comput. Phys. Commun. 181 (2010) 532; Marrone et al., CMAME 200 (2011) 1526", {delta}},
+    registry.add(
+        "fourtakas", {"diffusion of the dynamic density (hydrostatic part removed)", "Fourtakas et al., Comput. Fluids 190 (2019) 346", {delta}},
+        [](const Dictionary& dict, const ModelContext& c) {
+            return DensityDiffusion<D>{Fourtakas2019<D>(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0, c.rho0, c.stiffness, c.exponent)};
+        });
+    registry.add("antuono",
+                 {"delta-SPH diffusion with the renormalised density gradient (a hydrostatic gradient is not diffused)",
+                  "Antuono et al., Comput. Phys. Commun. 181 (2010) 532; Marrone et al., CMAME 200 (2011) 1526",
+                  {delta}},
                  [](const Dictionary& dict, const ModelContext& c) {
                      return DensityDiffusion<D>{Antuono2010(dict.getNonNegativeOrDefault("delta", 0.1), c.h, c.c0)};
                  });
@@ -31,10 +35,14 @@ std::string describe(const DensityDiffusion<D>& diffusion) {
     return std::visit(
         [](const auto& d) -> std::string {
             using T = std::decay_t<decltype(d)>;
-            if constexpr (std::is_same_v<T, NoDensityDiffusion>) return "none";
-            else if constexpr (std::is_same_v<T, MolteniColagrossi2009>) return fmt::format("molteniColagrossi: delta {:g}", d.delta);
-            else if constexpr (std::is_same_v<T, Antuono2010>) return fmt::format("antuono: delta {:g}", d.delta);
-            else return fmt::format("fourtakas: delta {:g}", d.delta);
+            if constexpr (std::is_same_v<T, NoDensityDiffusion>)
+                return "none";
+            else if constexpr (std::is_same_v<T, MolteniColagrossi2009>)
+                return fmt::format("molteniColagrossi: delta {:g}", d.delta);
+            else if constexpr (std::is_same_v<T, Antuono2010>)
+                return fmt::format("antuono: delta {:g}", d.delta);
+            else
+                return fmt::format("fourtakas: delta {:g}", d.delta);
         },
         diffusion);
 }

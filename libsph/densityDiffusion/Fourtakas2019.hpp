@@ -28,8 +28,7 @@ struct Fourtakas2019 {
     static constexpr int seriesTerms = 8;
 
     Fourtakas2019(double delta, double h, double c0, double rho0, double stiffness, double exponent)
-        : delta(delta), coefficient(2.0 * delta * h * c0), rho0(rho0), rho0OverStiffness(rho0 / stiffness),
-          inverseExponent(1.0 / exponent) {
+        : delta(delta), coefficient(2.0 * delta * h * c0), rho0(rho0), rho0OverStiffness(rho0 / stiffness), inverseExponent(1.0 / exponent) {
         // Binomial coefficients of (1 + y)^a - 1, a = 1/n, times rho0.
         double c = rho0;
         for (int k = 0; k < seriesTerms; ++k) {
@@ -40,17 +39,20 @@ struct Fourtakas2019 {
 
     template <bool OtherSeries>
     explicit Fourtakas2019(const Fourtakas2019<D, OtherSeries>& other)
-        : delta(other.delta), coefficient(other.coefficient), rho0(other.rho0), rho0OverStiffness(other.rho0OverStiffness),
-          inverseExponent(other.inverseExponent), series(other.series), seriesHolds(other.seriesHolds) {}
+        : delta(other.delta),
+          coefficient(other.coefficient),
+          rho0(other.rho0),
+          rho0OverStiffness(other.rho0OverStiffness),
+          inverseExponent(other.inverseExponent),
+          series(other.series),
+          seriesHolds(other.seriesHolds) {}
 
     // The same model with the hydrostatic part from std::pow, for the pair loop where setGravity
     // found the series out of reach: a loop in vector lanes cannot branch to std::pow per pair.
     Fourtakas2019<D, false> beyondSeries() const { return Fourtakas2019<D, false>(*this); }
 
     // Before each evaluation (gravity may be ramped in time); pairs are at most maxSeparation apart.
-    void setGravity(const Vec<D>& g, double maxSeparation) {
-        seriesHolds = rho0OverStiffness * g.norm() * maxSeparation < seriesLimit;
-    }
+    void setGravity(const Vec<D>& g, double maxSeparation) { seriesHolds = rho0OverStiffness * g.norm() * maxSeparation < seriesLimit; }
 
     // rho0 [(1 + y)^(1/n) - 1] at y and at -y, as a pair needs both.
     void hydrostaticDensities(double y, double& atY, double& atMinusY) const {
@@ -77,8 +79,7 @@ struct Fourtakas2019 {
     // The pair (i, j) adds toI V_j to i's density rate and toJ V_i to j's, V = m / rho, from
     // g.r_ij, r^2, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r. Plain numbers in and out, so a loop
     // over pairs keeps them in vector registers.
-    void pairRates(double gravityDotR, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F, double& toI,
-                   double& toJ) const {
+    void pairRates(double gravityDotR, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F, double& toI, double& toJ) const {
         const double y = -rho0OverStiffness * gravityDotR;
         const double common = coefficient * F * r2 * inverseRegularisedR2;
         double up, down;

@@ -14,8 +14,8 @@ struct MolteniColagrossi2009 {
 
     // The pair (i, j) adds toI V_j to i's density rate and toJ V_i to j's, V = m / rho, from
     // r^2, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r (g.r_ij is for Fourtakas' hydrostatic part).
-    void pairRates(double /*gravityDotR*/, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F,
-                   double& toI, double& toJ) const {
+    void pairRates(double /*gravityDotR*/, double r2, double inverseRegularisedR2, double rhoi, double rhoj, double F, double& toI,
+                   double& toJ) const {
         toI = coefficient * (rhoi - rhoj) * F * r2 * inverseRegularisedR2;
         toJ = -toI;
     }

@@ -28,15 +28,20 @@ void checkFluidState(const ParticleSet<D>& fluid, const Vec<D>& lo, const Vec<D>
     std::size_t i = 0;
     while (healthy(i)) ++i;
     std::string what;
-    if (!x[i].allFinite()) what = "has a non-finite position";
-    else if (!v[i].allFinite()) what = "has a non-finite velocity";
-    else if (v[i].squaredNorm() > c0 * c0) what = fmt::format("moves at {:g}, faster than the speed of sound c0 = {:g}", v[i].norm(), c0);
+    if (!x[i].allFinite())
+        what = "has a non-finite position";
+    else if (!v[i].allFinite())
+        what = "has a non-finite velocity";
+    else if (v[i].squaredNorm() > c0 * c0)
+        what = fmt::format("moves at {:g}, faster than the speed of sound c0 = {:g}", v[i].norm(), c0);
     else if (!(rho[i] >= 0.5 * rho0 && rho[i] <= 2.0 * rho0))
         what = fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0);
-    else what = fmt::format("left the domain [({:g}), ({:g})]", fmt::join(lo, " "), fmt::join(hi, " "));
-    throw FatalError(fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
-                                 "    The last written time is kept; reduce the time step (courant) or check the case.",
-                                 step, t, fluid.globalId[i], fmt::join(x[i], " "), what));
+    else
+        what = fmt::format("left the domain [({:g}), ({:g})]", fmt::join(lo, " "), fmt::join(hi, " "));
+    throw FatalError(
+        fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
+                    "    The last written time is kept; reduce the time step (courant) or check the case.",
+                    step, t, fluid.globalId[i], fmt::join(x[i], " "), what));
 }
 
 template void checkFluidState<1>(const ParticleSet<1>&, const Vec<1>&, const Vec<1>&, FluidStateLimits, long, double);

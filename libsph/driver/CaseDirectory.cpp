@@ -86,8 +86,8 @@ void removeIncompleteOutput(const std::filesystem::path& caseDirectory) {
         if (!std::regex_match(name, match, leftover)) continue;
         // A process that is still running (another solver on this case) is not interrupted.
         const long writer = std::strtol(match[4].str().c_str(), nullptr, 10);
-        const bool writerGone = writer > 0 && writer <= std::numeric_limits<pid_t>::max() &&
-                                ::kill(static_cast<pid_t>(writer), 0) != 0 && errno == ESRCH;
+        const bool writerGone =
+            writer > 0 && writer <= std::numeric_limits<pid_t>::max() && ::kill(static_cast<pid_t>(writer), 0) != 0 && errno == ESRCH;
         if (writerGone) found.push_back(item.path());
     }
     for (const auto& path : found) {

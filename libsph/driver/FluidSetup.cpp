@@ -44,14 +44,16 @@ void requireFields(const ParticleSet<D>& set, const std::filesystem::path& file,
 template <int D>
 void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& file) {
     const auto reject = [&](std::size_t i, const std::string& what) {
-        throw FatalError(fmt::format("error: particle file '{}': particle id {} has {} (a corrupt state file?)", file.string(), set.globalId[i], what));
+        throw FatalError(
+            fmt::format("error: particle file '{}': particle id {} has {} (a corrupt state file?)", file.string(), set.globalId[i], what));
     };
     for (std::size_t i = 0; i < set.size(); ++i)
         if (!set.position[i].allFinite()) reject(i, "a non-finite position");
     for (const auto& [name, field] : set.scalars())
         for (std::size_t i = 0; i < field.values.size(); ++i) {
             if (!std::isfinite(field.values[i])) reject(i, fmt::format("a non-finite {}", name));
-            if ((name == "mass" || name == "density") && !(field.values[i] > 0.0)) reject(i, fmt::format("{} {:g}, not positive", name, field.values[i]));
+            if ((name == "mass" || name == "density") && !(field.values[i] > 0.0))
+                reject(i, fmt::format("{} {:g}, not positive", name, field.values[i]));
             if (name == "area" && field.values[i] < 0.0) reject(i, fmt::format("area {:g}, negative", field.values[i]));
         }
     for (const auto& [name, field] : set.vectors())
@@ -106,16 +108,18 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
         const std::string type = patchDict.get<std::string>("type");
         const int needed = models[p]->minimumLayers(support, dx);
         if (!models[p]->actsThroughWallParticles() && layers[p] > 1)
-            patchDict.fail("type", fmt::format("'{}' acts from one layer of wall particles on the wall surface, but patch '{}' has {} layers; "
-                                               "generate it with layers 1; firstLayerOffset 0; in system/generateParticlesDict, or with no layers there (the "
-                                               "generator then takes them from the model)",
-                                               type, patchNames[p], layers[p]));
+            patchDict.fail("type",
+                           fmt::format("'{}' acts from one layer of wall particles on the wall surface, but patch '{}' has {} layers; "
+                                       "generate it with layers 1; firstLayerOffset 0; in system/generateParticlesDict, or with no layers there (the "
+                                       "generator then takes them from the model)",
+                                       type, patchNames[p], layers[p]));
         if (layers[p] < needed)
-            patchDict.fail("type", fmt::format("'{}' needs at least {} layers of wall particles to fill the kernel support ({:g} = {:g} dx) behind "
-                                               "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict (or with no layers "
-                                               "there: the generator then takes them from the model), or choose a wall-force model "
-                                               "(deficiencyCorrection) on one layer",
-                                               type, needed, support, support / dx, patchNames[p], layers[p], needed));
+            patchDict.fail(
+                "type", fmt::format("'{}' needs at least {} layers of wall particles to fill the kernel support ({:g} = {:g} dx) behind "
+                                    "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict (or with no layers "
+                                    "there: the generator then takes them from the model), or choose a wall-force model "
+                                    "(deficiencyCorrection) on one layer",
+                                    type, needed, support, support / dx, patchNames[p], layers[p], needed));
     }
 }
 
@@ -161,8 +165,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
     setup.rho0 = properties.rho0;
     fmt::print("Selecting equationOfState {}\n", describe(properties.eos));
-    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({:g}), gravityRampTime {:g}\n", properties.rho0, properties.nu, fmt::join(properties.gravity, " "),
-               properties.gravityRampTime);
+    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({:g}), gravityRampTime {:g}\n", properties.rho0, properties.nu,
+               fmt::join(properties.gravity, " "), properties.gravityRampTime);
 
     const Dictionary& kernelDict = schemes.subDict("kernel");
     const double hdx = kernelDict.getPositive("hdx");
@@ -226,7 +230,8 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     const auto& sortedPatch = walls.integer("patch");
     std::vector<std::size_t> patchOrder(setup.patchNames.size());
     for (std::size_t p = 0; p < patchOrder.size(); ++p) patchOrder[p] = p;
-    std::stable_sort(patchOrder.begin(), patchOrder.end(), [&](std::size_t a, std::size_t b) { return rank(static_cast<int>(a)) < rank(static_cast<int>(b)); });
+    std::stable_sort(patchOrder.begin(), patchOrder.end(),
+                     [&](std::size_t a, std::size_t b) { return rank(static_cast<int>(a)) < rank(static_cast<int>(b)); });
     std::size_t begin = 0;
     for (std::size_t p : patchOrder) {
         Patch<D> patch;
@@ -241,8 +246,10 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
             patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
             fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
             if (patch.motion->isFree() && patch.model->actsThroughWallParticles())
-                motion->fail("type", "a free body takes its loads from a wall-force model (monaghanKajtar, lennardJones, deficiencyCorrection, "
-                                     "deficiencyCorrectionBoundaryIntegral); patch '" + patch.name + "' uses " + patch.model->describe());
+                motion->fail("type",
+                             "a free body takes its loads from a wall-force model (monaghanKajtar, lennardJones, deficiencyCorrection, "
+                             "deficiencyCorrectionBoundaryIntegral); patch '" +
+                                 patch.name + "' uses " + patch.model->describe());
         }
         patches.push_back(std::move(patch));
     }
@@ -268,9 +275,10 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
 
     for (int d = 0; d < D; ++d)
         if (periodic[static_cast<std::size_t>(d)] && domainMax[d] - domainMin[d] < 3.0 * support)
-            throw FatalError(fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
-                                         "lengthen the domain or reduce hdx",
-                                         fluidFile.string(), "xyz"[d], domainMax[d] - domainMin[d], 3.0 * support));
+            throw FatalError(
+                fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
+                            "lengthen the domain or reduce hdx",
+                            fluidFile.string(), "xyz"[d], domainMax[d] - domainMin[d], 3.0 * support));
     FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density, shifting};
     setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
                                                     properties.gravity, properties.gravityRampTime, periodic);

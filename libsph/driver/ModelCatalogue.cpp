@@ -31,7 +31,8 @@ std::string listFamily(const Registry& registry, const std::string& where) {
         text += fmt::format("    {:<20} {}\n", name, doc.summary);
         if (!doc.reference.empty()) text += fmt::format("    {:<20} reference: {}\n", "", doc.reference);
         for (const CoefficientDoc& c : doc.coefficients)
-            text += fmt::format("    {:<20}   {:<22} {:<10} {}\n", "", c.keyword, c.defaultValue.empty() ? "required" : "= " + c.defaultValue, c.meaning);
+            text +=
+                fmt::format("    {:<20}   {:<22} {:<10} {}\n", "", c.keyword, c.defaultValue.empty() ? "required" : "= " + c.defaultValue, c.meaning);
     }
     return text + "\n";
 }
@@ -44,13 +45,15 @@ std::string modelCatalogue(const std::string& family) {
         {"kernel", [] { return listFamily(makeKernelRegistry<2>(), "system/sphSchemes, kernel { type ...; }"); }},
         {"density",
          [] {
-             return std::string("density formulation (system/sphSchemes, density { type ...; })\n"
-                                "    continuity           d rho/dt = sum_j m_j v_ij . grad W_ij, integrated in time\n"
-                                "    summation            rho_i = sum_j m_j W_ij over fluid and wall particles\n\n");
+             return std::string(
+                 "density formulation (system/sphSchemes, density { type ...; })\n"
+                 "    continuity           d rho/dt = sum_j m_j v_ij . grad W_ij, integrated in time\n"
+                 "    summation            rho_i = sum_j m_j W_ij over fluid and wall particles\n\n");
          }},
         {"viscosity", [] { return listFamily(makeViscosityRegistry(), "system/sphSchemes, viscosity { type ...; }"); }},
         {"densityDiffusion", [] { return listFamily(makeDensityDiffusionRegistry<2>(), "system/sphSchemes, densityDiffusion { type ...; }"); }},
-        {"particleShifting", [] { return listFamily(makeParticleShiftingRegistry(), "system/sphSchemes, particleShifting { type ...; } (optional)"); }},
+        {"particleShifting",
+         [] { return listFamily(makeParticleShiftingRegistry(), "system/sphSchemes, particleShifting { type ...; } (optional)"); }},
         {"equationOfState",
          [] { return listFamily(makeEquationOfStateRegistry(), "constant/fluidProperties, equationOfState { type ...; c0 ...; }"); }},
         {"boundary", [] { return listFamily(makeBoundaryModelRegistry<2>(), "constant/boundaryProperties, <patch> { type ...; }"); }},
@@ -58,9 +61,7 @@ std::string modelCatalogue(const std::string& family) {
         {"integrator", [] { return listFamily(makeTimeIntegratorRegistry<2>(), "system/timeIntegration, integrator { type ...; }"); }},
         {"functionObject", [] { return listFamily(makeFunctionObjectRegistry<2>(), "system/controlDict, functions { <name> { type ...; } }"); }},
         {"analytic",
-         [] {
-             return listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }");
-         }},
+         [] { return listFamily(makeAnalyticSolutionRegistry<2>(), "errorNorm's solution { type ...; }, a fluid region's velocity { type ...; }"); }},
         {"fluidRegion", [] { return listFamily(makeFluidShapeRegistry<2>(), "system/generateParticlesDict, fluid { <name> { type ...; } }"); }},
         {"wallPatch", [] { return listFamily(makeWallPatchRegistry<2>(), "system/generateParticlesDict, boundaries { <patch> { type ...; } }"); }},
     };

@@ -6,8 +6,12 @@
 namespace sph {
 
 Progress::Progress(double startTime, double endTime, std::size_t particles)
-    : startTime_(startTime), endTime_(endTime), particles_(particles), terminal_(::isatty(STDOUT_FILENO) != 0),
-      start_(std::chrono::steady_clock::now()), lastPrint_(start_) {}
+    : startTime_(startTime),
+      endTime_(endTime),
+      particles_(particles),
+      terminal_(::isatty(STDOUT_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
+      lastPrint_(start_) {}
 
 double Progress::elapsedSeconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
@@ -19,8 +23,8 @@ void Progress::update(long step, double t, double dt) {
     const double wall = elapsedSeconds();
     const double fraction = (t - startTime_) / (endTime_ - startTime_);
     const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
-    const std::string line = fmt::format("step {:>8}  t = {:<11.6g} dt = {:<10.4g} particles {}  wall {:.1f} s  ETA {:.1f} s", step, t, dt,
-                                         particles_, wall, eta);
+    const std::string line =
+        fmt::format("step {:>8}  t = {:<11.6g} dt = {:<10.4g} particles {}  wall {:.1f} s  ETA {:.1f} s", step, t, dt, particles_, wall, eta);
     if (terminal_) {
         fmt::print("\r{}\x1b[K", line);
         std::fflush(stdout);

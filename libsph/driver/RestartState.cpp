@@ -51,10 +51,9 @@ void restoreRestartState(FluidSystem<D>& system, TimeIntegrator<D>& integrator, 
     }
 }
 
-#define SPHKIT_INSTANTIATE(D)                                                                                                          \
-    template void collectRestartState<D>(const FluidSystem<D>&, const TimeIntegrator<D>&, const std::string&, StateHeader&);         \
-    template void restoreRestartState<D>(FluidSystem<D>&, TimeIntegrator<D>&, const std::string&, const StateHeader&, double, \
-                                         const std::string&);
+#define SPHKIT_INSTANTIATE(D)                                                                                                \
+    template void collectRestartState<D>(const FluidSystem<D>&, const TimeIntegrator<D>&, const std::string&, StateHeader&); \
+    template void restoreRestartState<D>(FluidSystem<D>&, TimeIntegrator<D>&, const std::string&, const StateHeader&, double, const std::string&);
 #ifdef SPHKIT_HAS_1D
 SPHKIT_INSTANTIATE(1)
 #endif

@@ -39,8 +39,8 @@ struct FunctionObjectEntry {
 };
 
 template <int D>
-std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& controlDict, const std::filesystem::path& caseDirectory,
-                                                        double startTime, double rho0, const FluidSystem<D>& system) {
+std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime,
+                                                        double rho0, const FluidSystem<D>& system) {
     std::vector<FunctionObjectEntry<D>> entries;
     const Dictionary* functions = controlDict.findSubDict("functions");
     if (!functions) return entries;
@@ -75,12 +75,12 @@ void reportErrorAgainstCost(const std::vector<FunctionObjectEntry<D>>& functionO
             figures.push_back(fmt::format("{} {}: L1 {:.3e}, L2 {:.3e}, Linf {:.3e} ({})", entry.name, error.quantity, error.norms.l1, error.norms.l2,
                                           error.norms.linf, error.normalisation));
             csv += fmt::format("{},{},{:.6e},{:.6e},{:.6e},\"{}\",{:.4f},{},{},{:.6e},{:.9g},{:.9g}\n", entry.name, error.quantity, error.norms.l1,
-                               error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate, startTime,
-                               endTime);
+                               error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate,
+                               startTime, endTime);
         }
     if (figures.empty()) return;
-    fmt::print("Error against run time: {}; wall time {:.2f} s, {} fluid particles, {} steps\n", fmt::join(figures, "; "), cost.wallSeconds, cost.fluidParticles,
-               cost.steps);
+    fmt::print("Error against run time: {}; wall time {:.2f} s, {} fluid particles, {} steps\n", fmt::join(figures, "; "), cost.wallSeconds,
+               cost.fluidParticles, cost.steps);
     const auto directory = caseDirectory / "postProcessing" / "summary" / timeName(startTime);
     std::filesystem::create_directories(directory);
     writeTextAtomically(directory / "summary.csv", csv);
@@ -110,7 +110,8 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
     PvdCollection pvd(caseDirectory / (caseName(caseDirectory) + ".pvd"));
     for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
-        if (written.time <= start.time) pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
+        if (written.time <= start.time)
+            pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
 
     StateHeader header = setup.header;
     const auto writeState = [&](const std::filesystem::path& directory, double t, long step) {
@@ -193,8 +194,8 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
             runFunctionObjects(t, true);
             write(t, step);
             progress.finish();
-            fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}; rerun to continue from it\n", signalName(signal), step,
-                       t, (caseDirectory / timeName(t)).string());
+            fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}; rerun to continue from it\n", signalName(signal),
+                       step, t, (caseDirectory / timeName(t)).string());
             break;
         }
         runFunctionObjects(t, last);

@@ -11,11 +11,12 @@ EquationOfStateRegistry makeEquationOfStateRegistry() {
     const CoefficientDoc c0FromHeight{"c0FromHeight", "", "{ coefficient 10; height H; }: c0 = coefficient sqrt(|g| H) (this or c0)"};
     EquationOfStateRegistry registry("equationOfState");
     registry.add("tait",
-                 {"p = B((rho/rho0)^gamma - 1) + p0, B = c0^2 rho0/gamma", "Monaghan, J. Comput. Phys. 110 (1994) 399",
+                 {"p = B((rho/rho0)^gamma - 1) + p0, B = c0^2 rho0/gamma",
+                  "Monaghan, J. Comput. Phys. 110 (1994) 399",
                   {c0, c0FromHeight, {"gamma", "7", "exponent"}, p0}},
                  [](const Dictionary& dict, double rho0, double c0) {
-                     return EquationOfState{TaitEquationOfState(rho0, c0, dict.getPositiveOrDefault("gamma", 7.0),
-                                                                dict.getOrDefault("backgroundPressure", 0.0))};
+                     return EquationOfState{
+                         TaitEquationOfState(rho0, c0, dict.getPositiveOrDefault("gamma", 7.0), dict.getOrDefault("backgroundPressure", 0.0))};
                  });
     registry.add("linear", {"p = c0^2 (rho - rho0) + p0", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", {c0, c0FromHeight, p0}},
                  [](const Dictionary& dict, double rho0, double c0) {

@@ -13,7 +13,11 @@ namespace sph {
 
 struct TaitEquationOfState {
     TaitEquationOfState(double rho0, double c0, double gamma, double p0)
-        : rho0(rho0), c0(c0), gamma(gamma), p0(p0), B(c0 * c0 * rho0 / gamma),
+        : rho0(rho0),
+          c0(c0),
+          gamma(gamma),
+          p0(p0),
+          B(c0 * c0 * rho0 / gamma),
           wholeGamma(gamma == std::floor(gamma) && gamma <= 64.0 ? static_cast<int>(gamma) : 0) {}
 
     double pressure(double rho) const {

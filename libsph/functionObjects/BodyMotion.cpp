@@ -22,7 +22,7 @@ void BodyMotion<D>::execute(const FluidSystem<D>& system, double t) {
         if (!body) dict_->fail("patch", "'" + patch_ + "' is not a patch whose motion is freeBody");
         const auto& s = body->state();
         out_.append(fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}", t, s.position.x(), s.position.y(), s.angle,
-                            s.velocity.x(), s.velocity.y(), s.angularVelocity, body->force().x(), body->force().y(), body->torque()));
+                                s.velocity.x(), s.velocity.y(), s.angularVelocity, body->force().x(), body->force().y(), body->torque()));
     }
 }
 

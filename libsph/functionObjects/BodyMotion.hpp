@@ -8,7 +8,6 @@
 #include "functionObjects/FunctionObject.hpp"
 #include "functionObjects/TimeSeriesFile.hpp"
 
-
 namespace sph {
 
 template <int D>

@@ -46,7 +46,7 @@ private:
 
 // What a function object reports to the run's closing error summary.
 struct ReportedError {
-    std::string quantity;       // "U", "p at P1", "front", ...
+    std::string quantity;  // "U", "p at P1", "front", ...
     ErrorNorms norms;
     std::string normalisation;  // what the norms are divided by, in words ("scale 0.05715")
 };

@@ -82,7 +82,8 @@ FunctionObjectRegistry<D> makeFunctionObjectRegistry() {
                              {"scale", "1", "errors are divided by it"},
                              {"subtractMean", "no", "compare p up to a constant"},
                              interval}});
-    add<PatchForces<D>>(registry, "forces", {"force of the fluid on wall-particle patches, over time", "", {{"patches", "", "(name ...)"}, interval}});
+    add<PatchForces<D>>(registry, "forces",
+                        {"force of the fluid on wall-particle patches, over time", "", {{"patches", "", "(name ...)"}, interval}});
     add<FieldTotals<D>>(registry, "fieldTotals", {"total mass, kinetic energy and momentum, over time", "", {interval}});
     add<WallPenetrations<D>>(registry, "wallPenetrations", {"fluid particles behind a wall's first layer, counted every step", "", {interval}});
     return registry;

@@ -50,11 +50,12 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
                 const Patch<D>& patch = system.patches[k];
                 Vec<D> force = Vec<D>::Zero();
                 for (std::size_t w = patch.begin; w < patch.end; ++w)
-                    system.fluidCells().forEachNeighbour(walls.position[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
-                        const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
-                        const double F = kernel.gradientFactor(std::sqrt(r2));
-                        force -= m[i] * fluidWallAcceleration<true>(viscosity, r, r2, F, eta2, p[i] / (rho[i] * rho[i]), rho[i], v[i], wall, w);
-                    });
+                    system.fluidCells().forEachNeighbour(
+                        walls.position[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
+                            const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
+                            const double F = kernel.gradientFactor(std::sqrt(r2));
+                            force -= m[i] * fluidWallAcceleration<true>(viscosity, r, r2, F, eta2, p[i] / (rho[i] * rho[i]), rho[i], v[i], wall, w);
+                        });
                 result.push_back(force);
             }
         },

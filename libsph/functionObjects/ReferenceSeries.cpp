@@ -76,8 +76,10 @@ ReferenceSeries::ReferenceSeries(const Dictionary& dict, const std::filesystem::
             const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
             if (cell.empty() || error != std::errc() || end != cell.data() + cell.size())
                 throw FatalError(fmt::format("error: {}: column '{}' holds '{}', not a number", where(lineNumber), header[indices[k]], cell));
-            if (k == 0) row.t = value * timeScale;
-            else row.values.push_back(value * valueScale + valueOffset);
+            if (k == 0)
+                row.t = value * timeScale;
+            else
+                row.values.push_back(value * valueScale + valueOffset);
         }
         rows.push_back(std::move(row));
     }

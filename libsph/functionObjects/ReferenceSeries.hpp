@@ -51,7 +51,7 @@ private:
     std::filesystem::path file_;
     std::vector<std::string> quantities_;
     Along along_;
-    std::vector<double> times_;  // or coordinates, non-decreasing
+    std::vector<double> times_;                // or coordinates, non-decreasing
     std::vector<std::vector<double>> values_;  // [column][row]
     double scale_;
     std::vector<ErrorAccumulator> accumulators_;

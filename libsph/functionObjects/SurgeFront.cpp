@@ -13,7 +13,8 @@ SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext<D>
     if (!(direction_.norm() > 0.0)) dict.fail("direction", "must not be the zero vector");
     direction_.normalize();
     out_ = TimeSeriesFile(context.outputDirectory, "surgeFront.dat", "# time front");
-    if (const Dictionary* reference = dict.findSubDict("reference")) reference_.emplace(*reference, context.caseDirectory, std::vector<std::string>{"front"});
+    if (const Dictionary* reference = dict.findSubDict("reference"))
+        reference_.emplace(*reference, context.caseDirectory, std::vector<std::string>{"front"});
 }
 
 template <int D>

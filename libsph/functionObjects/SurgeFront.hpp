@@ -17,7 +17,6 @@
 #include "functionObjects/ReferenceSeries.hpp"
 #include "functionObjects/TimeSeriesFile.hpp"
 
-
 namespace sph {
 
 template <int D>

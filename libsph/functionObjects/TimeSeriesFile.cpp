@@ -6,12 +6,10 @@
 
 namespace sph {
 
-TimeSeriesFile::TimeSeriesFile(const std::filesystem::path& directory, const std::string& file, const std::string& header)
-    : path_(directory / file) {
+TimeSeriesFile::TimeSeriesFile(const std::filesystem::path& directory, const std::string& file, const std::string& header) : path_(directory / file) {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);
-    if (std::filesystem::exists(path_, ec))
-        fmt::print("Replacing {} (written by an earlier run from the same start time)\n", path_.string());
+    if (std::filesystem::exists(path_, ec)) fmt::print("Replacing {} (written by an earlier run from the same start time)\n", path_.string());
     out_.open(path_);
     if (!out_) throw FatalError("error: cannot create '" + path_.string() + "' (directory not writable?)");
     append(header);

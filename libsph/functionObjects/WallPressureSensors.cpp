@@ -14,9 +14,7 @@ namespace sph {
 
 template <int D>
 WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : points_(dict.getVectorList<D>("points")),
-      window_(dict.getPositiveOrDefault("timeWindow", 0.0)),
-      patchName_(dict.get<std::string>("patch")) {
+    : points_(dict.getVectorList<D>("points")), window_(dict.getPositiveOrDefault("timeWindow", 0.0)), patchName_(dict.get<std::string>("patch")) {
     const FluidSystem<D>& system = context.system;
     if (points_.empty()) dict.fail("points", "lists no sensor");
     const Patch<D>* patch = &patchByName(dict, "patch", patchName_, system);
@@ -87,9 +85,9 @@ double WallPressureSensors<D>::extrapolatedPressure(const FluidSystem<D>& system
     WallPressureExtrapolation<D> extrapolation;
     std::visit(
         [&](const auto& kernel) {
-            system.fluidCells().forEachNeighbour(system.walls.position[wall], system.supportRadius(), [&](std::uint32_t f, const Vec<D>& r, double r2) {
-                extrapolation.add(kernel.value(std::sqrt(r2)), p[f], rho[f], r);
-            });
+            system.fluidCells().forEachNeighbour(
+                system.walls.position[wall], system.supportRadius(),
+                [&](std::uint32_t f, const Vec<D>& r, double r2) { extrapolation.add(kernel.value(std::sqrt(r2)), p[f], rho[f], r); });
         },
         system.models().kernel);
     return extrapolation.weight > 0.0 ? extrapolation.pressure(system.gravityAt(t) - wallAcceleration) : 0.0;

@@ -100,7 +100,8 @@ Vec<2> semiAxesOf(const Dictionary& region) {
     return axes;
 }
 
-const CoefficientDoc velocityDoc{"velocity", "(0 0 0)", "a vector, or an analytic solution's field at t = 0: { type taylorGreen; ... } (-listModels analytic)"};
+const CoefficientDoc velocityDoc{"velocity", "(0 0 0)",
+                                 "a vector, or an analytic solution's field at t = 0: { type taylorGreen; ... } (-listModels analytic)"};
 
 }  // namespace
 
@@ -112,11 +113,16 @@ void shapeForOtherDimensions(const Dictionary& dict, const std::string& what, co
 template <int D>
 FluidShapeRegistry<D> makeFluidShapeRegistry() {
     FluidShapeRegistry<D> registry("fluid region type");
-    registry.add("box", {"the box's own lattice, anchored at min; an extent not a whole number of dx adjusts the last spacing (dx/2 to 3dx/2, with a note); 1D-3D",
-                         "",
-                         {{"min", "", "lower corner"}, {"max", "", "upper corner"}, velocityDoc}},
-                 [](const Dictionary& region, double dx, const GenerationDomain<D>&, std::vector<std::string>& notes) { return fillBox<D>(region, dx, notes); });
-    const auto ellipse = [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
+    registry.add(
+        "box",
+        {"the box's own lattice, anchored at min; an extent not a whole number of dx adjusts the last spacing (dx/2 to 3dx/2, with a note); 1D-3D",
+         "",
+         {{"min", "", "lower corner"}, {"max", "", "upper corner"}, velocityDoc}},
+        [](const Dictionary& region, double dx, const GenerationDomain<D>&, std::vector<std::string>& notes) {
+            return fillBox<D>(region, dx, notes);
+        });
+    const auto ellipse = [](const Dictionary& region, double dx, const GenerationDomain<D>& domain,
+                            std::vector<std::string>&) -> std::vector<Vec<D>> {
         if constexpr (D == 2) {
             const Vec<2> centre = region.getVector<2>("centre");
             const Vec<2> axes = semiAxesOf(region);
@@ -127,8 +133,11 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
             shapeForOtherDimensions(region, "fluid region", "2D", D);
         }
     };
-    registry.add("circle", {"the domain's lattice points inside a circle; 2D", "", {{"centre", "", "(x y)"}, {"radius", "", "[m]"}, velocityDoc}}, ellipse);
-    registry.add("ellipse", {"the domain's lattice points inside an ellipse; 2D", "", {{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, velocityDoc}}, ellipse);
+    registry.add("circle", {"the domain's lattice points inside a circle; 2D", "", {{"centre", "", "(x y)"}, {"radius", "", "[m]"}, velocityDoc}},
+                 ellipse);
+    registry.add("ellipse",
+                 {"the domain's lattice points inside an ellipse; 2D", "", {{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, velocityDoc}},
+                 ellipse);
     registry.add("polygon", {"the domain's lattice points inside a closed polygon; 2D", "", {{"points", "", "((x y) ...), at least 3"}, velocityDoc}},
                  [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
                      if constexpr (D == 2) {
@@ -140,12 +149,18 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
                      }
                  });
     registry.add("surface",
-                 {"the domain's lattice points inside a closed surface from a file: 3D an STL or OBJ surface; 2D OBJ polylines, or a surface cut at z = slice; 2D, 3D",
+                 {"the domain's lattice points inside a closed surface from a file: 3D an STL or OBJ surface; 2D OBJ polylines, or a surface cut at "
+                  "z = slice; 2D, 3D",
                   "",
-                  {{"file", "", "STL or OBJ, relative to the case"}, {"scale", "1", "multiplies the file's coordinates"}, {"slice", "0", "2D: z of the cut through a surface"}, velocityDoc}},
+                  {{"file", "", "STL or OBJ, relative to the case"},
+                   {"scale", "1", "multiplies the file's coordinates"},
+                   {"slice", "0", "2D: z of the cut through a surface"},
+                   velocityDoc}},
                  [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
-                     if constexpr (D >= 2) return fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
-                     else shapeForOtherDimensions(region, "fluid region", "2D and 3D", D);
+                     if constexpr (D >= 2)
+                         return fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
+                     else
+                         shapeForOtherDimensions(region, "fluid region", "2D and 3D", D);
                  });
     return registry;
 }

@@ -30,7 +30,7 @@ namespace sph {
 template <int D>
 struct FluidRegionParticles {
     std::vector<Vec<D>> positions;
-    Vec<D> velocity = Vec<D>::Zero();                          // a constant velocity, or
+    Vec<D> velocity = Vec<D>::Zero();                         // a constant velocity, or
     std::shared_ptr<const AnalyticSolution<D>> initialField;  // the velocity (and pressure) of a solution at t = 0
     std::vector<std::string> notes;                           // adjusted spacings, for the user to read
 };

@@ -41,14 +41,16 @@ std::string outsideTheWalls(const std::string& region, const std::vector<Vec<D>>
     std::size_t outside = 0;
     for (std::size_t i = first; i < fluid.size(); ++i)
         for (int d = 0; d < D; ++d)
-            if ((periodic.empty() || periodic[static_cast<std::size_t>(d)] == 0.0) && (fluid[i][d] < lo[d] - 0.5 * dx || fluid[i][d] > hi[d] + 0.5 * dx)) {
+            if ((periodic.empty() || periodic[static_cast<std::size_t>(d)] == 0.0) &&
+                (fluid[i][d] < lo[d] - 0.5 * dx || fluid[i][d] > hi[d] + 0.5 * dx)) {
                 ++outside;
                 break;
             }
     if (outside == 0) return "";
-    return fmt::format("fluid region '{}' has {} of its {} particles outside the box around the wall particles, from ({:g}) to ({:g}): "
-                       "is it outside the tank?",
-                       region, outside, fluid.size() - first, fmt::join(lo.data(), lo.data() + D, " "), fmt::join(hi.data(), hi.data() + D, " "));
+    return fmt::format(
+        "fluid region '{}' has {} of its {} particles outside the box around the wall particles, from ({:g}) to ({:g}): "
+        "is it outside the tank?",
+        region, outside, fluid.size() - first, fmt::join(lo.data(), lo.data() + D, " "), fmt::join(hi.data(), hi.data() + D, " "));
 }
 
 // Two patches that lay most of their particles on each other: one patch listed twice under two
@@ -95,14 +97,16 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
                                              across, dx, d, maxSpacingsAcross));
         latticePoints *= across + 1.0;
     }
-    requireMemory(16.0 * latticePoints, fmt::format("{}: spacing {:g} over the domain ({:.3g} lattice points)", dict.where().str(), dx, latticePoints));
+    requireMemory(16.0 * latticePoints,
+                  fmt::format("{}: spacing {:g} over the domain ({:.3g} lattice points)", dict.where().str(), dx, latticePoints));
     std::vector<double> periodic;
     if (domain.found("periodic")) {
         periodic.assign(static_cast<std::size_t>(D), 0.0);
         for (const std::string& axis : domain.get<std::vector<std::string>>("periodic")) {
             const auto at = std::string("xyz").substr(0, D).find(axis);
             if (axis.size() != 1 || at == std::string::npos)
-                domain.fail("periodic", fmt::format("unknown direction '{}'; valid directions are: {}", axis, std::string("x y z").substr(0, 2 * D - 1)));
+                domain.fail("periodic",
+                            fmt::format("unknown direction '{}'; valid directions are: {}", axis, std::string("x y z").substr(0, 2 * D - 1)));
             periodic[at] = 1.0;
         }
     }
@@ -166,7 +170,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
             Vec<D> push = Vec<D>::Zero();
             wallCells.forEachNeighbour(x, clearance, [&](std::uint32_t j, const Vec<D>& fromWall, double) {
                 const double gap = fromWall.dot(allWalls.normals[j]);
-                if (!oneLayerPatch[static_cast<std::size_t>(patchOf[j])] || gap <= 0.0) drop = true;
+                if (!oneLayerPatch[static_cast<std::size_t>(patchOf[j])] || gap <= 0.0)
+                    drop = true;
                 else if (0.5 * dx - gap > deepest) {
                     deepest = 0.5 * dx - gap;
                     push = deepest * allWalls.normals[j];
@@ -183,7 +188,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
 
     // Fluid regions.
     std::vector<Vec<D>> fluidPositions, fluidVelocities;
-    std::vector<double> surfaceHeight;    // per particle: the top of its region along -g
+    std::vector<double> surfaceHeight;     // per particle: the top of its region along -g
     std::vector<double> initialPressures;  // per particle, with initialPressure analytic
     const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
     std::size_t dropped = 0;
@@ -213,8 +218,10 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
             fluidVelocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
             if (initialPressure == "analytic") {
                 if (!filled.initialField || !filled.initialField->hasPressure())
-                    dict.fail("initialPressure", fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
-                                                             "field (velocity {{ type taylorGreen; ... }}, say)", name));
+                    dict.fail("initialPressure",
+                              fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
+                                          "field (velocity {{ type taylorGreen; ... }}, say)",
+                                          name));
                 initialPressures.push_back(filled.initialField->pressure(x, 0.0, {rho0, properties.gravity}));
             }
             top = std::max(top, x.dot(up) + 0.5 * dx);
@@ -267,7 +274,8 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         area[k] = allWalls.areas[k];
         patch[k] = patchOf[k];
         layer[k] = allWalls.layers[k];
-        wallDensity[k] = initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;
+        wallDensity[k] =
+            initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;
         wallPressure[k] = pressureOf(wallDensity[k]);
     }
 

@@ -25,8 +25,10 @@ auto readBoundary(const Dictionary& dict, const std::filesystem::path& caseDirec
     const std::filesystem::path file = caseDirectory / dict.get<std::string>("file");
     const double scale = dict.getPositiveOrDefault("scale", 1.0);
     try {
-        if constexpr (D == 2) return std::make_shared<const ClosedCurves>(ClosedCurves::read(file, scale, dict.getOrDefault<double>("slice", 0.0)));
-        else return std::make_shared<const TriangleSurface>(TriangleSurface::read(file, scale));
+        if constexpr (D == 2)
+            return std::make_shared<const ClosedCurves>(ClosedCurves::read(file, scale, dict.getOrDefault<double>("slice", 0.0)));
+        else
+            return std::make_shared<const TriangleSurface>(TriangleSurface::read(file, scale));
     } catch (const FatalError& error) {
         dict.fail("file", error.what());
     }
@@ -50,7 +52,7 @@ std::vector<Vec<2>> resampleLoop(const std::vector<Vec<2>>& loop, double dx) {
     for (std::size_t c = 0; c < corners.size(); ++c) {
         const std::size_t from = corners[c], to = corners[(c + 1) % corners.size()];
         std::vector<Vec<2>> stretch{loop[from]};
-        for (std::size_t i = (from + 1) % n; ; i = (i + 1) % n) {
+        for (std::size_t i = (from + 1) % n;; i = (i + 1) % n) {
             stretch.push_back(loop[i]);
             if (i == to) break;
         }
@@ -147,8 +149,8 @@ void forEachLatticePointOn(const Triangle& triangle, const Vec<3>& domainMin, do
             x[u] = p.x();
             x[v] = p.y();
             // On the triangle's plane: n . (x - a) = 0 solved for the facing axis.
-            x[axis] = triangle.a[axis] - (triangle.outward[u] * (p.x() - triangle.a[u]) + triangle.outward[v] * (p.y() - triangle.a[v])) /
-                                             triangle.outward[axis];
+            x[axis] = triangle.a[axis] -
+                      (triangle.outward[u] * (p.x() - triangle.a[u]) + triangle.outward[v] * (p.y() - triangle.a[v])) / triangle.outward[axis];
             visit(x, area);
         }
 }
@@ -202,7 +204,8 @@ namespace {
 WallPatchParticles<2> sampledWall(const Dictionary& patch, const ClosedCurves& curves, bool fluidInside, double dx, double offset) {
     WallPatchParticles<2> walls;
     // Each loop runs counter-clockwise: fluid inside it is on the left.
-    for (const std::vector<Vec<2>>& loop : curves.loops()) addWallPath(patch, resampleLoop(loop, dx), true, fluidInside ? 1.0 : -1.0, dx, 1, offset, walls);
+    for (const std::vector<Vec<2>>& loop : curves.loops())
+        addWallPath(patch, resampleLoop(loop, dx), true, fluidInside ? 1.0 : -1.0, dx, 1, offset, walls);
     return walls;
 }
 
@@ -214,8 +217,10 @@ WallPatchParticles<3> sampledWall(const TriangleSurface& surface, bool fluidInsi
         const auto add = [&](const Vec<3>& x, double area) { walls.add(x - offset * dx * intoFluid, intoFluid, std::sqrt(area), 0, area); };
         // A plane facing an axis takes the lattice's own points, as a box's face; any other
         // triangle its pieces, whose areas add up to its own.
-        if (t.outward.cwiseAbs().maxCoeff() > 1.0 - 1e-9) forEachLatticePointOn(t, domainMin, dx, add);
-        else forEachPieceOf(t, 2.0 * dx, add);
+        if (t.outward.cwiseAbs().maxCoeff() > 1.0 - 1e-9)
+            forEachLatticePointOn(t, domainMin, dx, add);
+        else
+            forEachPieceOf(t, 2.0 * dx, add);
     }
     return walls;
 }
@@ -230,8 +235,10 @@ WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const Wal
     const bool fluidInside = patch.get<bool>("fluidInside");
     WallPatchParticles<D> walls;
     if (layers == 1) {
-        if constexpr (D == 2) walls = sampledWall(patch, *surface, fluidInside, dx, layout.firstLayerOffset);
-        else walls = sampledWall(*surface, fluidInside, domainMin, dx, layout.firstLayerOffset);
+        if constexpr (D == 2)
+            walls = sampledWall(patch, *surface, fluidInside, dx, layout.firstLayerOffset);
+        else
+            walls = sampledWall(*surface, fluidInside, domainMin, dx, layout.firstLayerOffset);
     } else {
         if (patch.found("firstLayerOffset"))
             patch.fail("firstLayerOffset", fmt::format("a surface's wall of {} layers is the lattice behind the surface, which no offset moves; "
@@ -256,7 +263,9 @@ WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const Wal
 
 template std::vector<Vec<2>> fillSurface<2>(const Dictionary&, double, const std::filesystem::path&, const Vec<2>&, const Vec<2>&);
 template std::vector<Vec<3>> fillSurface<3>(const Dictionary&, double, const std::filesystem::path&, const Vec<3>&, const Vec<3>&);
-template WallPatchParticles<2> surfaceWalls<2>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<2>&, const Vec<2>&);
-template WallPatchParticles<3> surfaceWalls<3>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<3>&, const Vec<3>&);
+template WallPatchParticles<2> surfaceWalls<2>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<2>&,
+                                               const Vec<2>&);
+template WallPatchParticles<3> surfaceWalls<3>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<3>&,
+                                               const Vec<3>&);
 
 }  // namespace sph

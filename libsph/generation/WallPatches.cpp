@@ -160,7 +160,8 @@ std::vector<PathFace> pathFaces(const Dictionary& patch, const std::vector<Vec<2
 // they meet (the mitre), which gives a right-angled corner the block the faces' lattices
 // continue; beyond, an arc of radius `depth` round the corner, so no particle lies farther
 // than `depth` from the wall.
-void fillConvexCorner(const PathFace& a, const PathFace& b, double depth, double gapA, double gapB, double dx, int layer, WallPatchParticles<2>& walls) {
+void fillConvexCorner(const PathFace& a, const PathFace& b, double depth, double gapA, double gapB, double dx, int layer,
+                      WallPatchParticles<2>& walls) {
     const Vec<2> corner = b.start, behindA = corner - depth * a.normal, behindB = corner - depth * b.normal;
     const double turn = std::acos(std::clamp(a.tangent.dot(b.tangent), -1.0, 1.0));
     const bool mitre = turn <= 0.5 * std::numbers::pi + 1e-12;
@@ -182,7 +183,8 @@ void fillConvexCorner(const PathFace& a, const PathFace& b, double depth, double
             if (!mitre) {
                 const double angle = turnSense * u / depth;
                 const Vec<2> outward = -a.normal;
-                x = corner + depth * Vec<2>(std::cos(angle) * outward.x() - std::sin(angle) * outward.y(), std::sin(angle) * outward.x() + std::cos(angle) * outward.y());
+                x = corner + depth * Vec<2>(std::cos(angle) * outward.x() - std::sin(angle) * outward.y(),
+                                            std::sin(angle) * outward.x() + std::cos(angle) * outward.y());
             } else {
                 x = u < extension ? Vec<2>(behindA + u * a.tangent) : Vec<2>(behindB - (join - u) * b.tangent);
             }
@@ -211,14 +213,17 @@ std::optional<double> depthBehind(const Vec<2>& x, const PathFace& face, double 
 // each particle belongs to the face it lies nearer (b on a tie), and a particle of a closer
 // than 3/4 dx to one of b's is left out, as is any that would come out in front of the other
 // face (a wedge thinner than the layers). A right-angled corner keeps its lattice, each point once.
-void resolveConcaveCorner(const PathFace& a, std::vector<PathParticle>& ofA, const PathFace& b, std::vector<PathParticle>& ofB, double deepest, double dx) {
+void resolveConcaveCorner(const PathFace& a, std::vector<PathParticle>& ofA, const PathFace& b, std::vector<PathParticle>& ofB, double deepest,
+                          double dx) {
     const double tolerance = 1e-9 * dx;
     std::vector<Vec<2>> nearCorner;  // b's particles within reach of a's layers
     for (PathParticle& p : ofB) {
         const std::optional<double> behindA = depthBehind(p.x, a, dx);
         if (!p.kept || !behindA || !(p.depth > 0.0)) continue;
-        if (*behindA < p.depth - tolerance) p.kept = false;
-        else if (*behindA < deepest + dx) nearCorner.push_back(p.x);
+        if (*behindA < p.depth - tolerance)
+            p.kept = false;
+        else if (*behindA < deepest + dx)
+            nearCorner.push_back(p.x);
     }
     for (PathParticle& p : ofA) {
         const std::optional<double> behindB = depthBehind(p.x, b, dx);
@@ -253,7 +258,8 @@ void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, boo
             if (closed && (!(depth > 0.0) || !convex(previous, face))) {
                 const Vec<2> bisector = (previous.normal + face.normal).normalized();
                 const double vertexArea = (0.5 * previous.spacing * previous.normal + 0.5 * face.spacing * face.normal).norm();
-                ofFace[s].push_back({face.start - depth / bisector.dot(face.normal) * bisector, bisector, 0.5 * (previous.spacing + face.spacing), vertexArea, depth, layer});
+                ofFace[s].push_back({face.start - depth / bisector.dot(face.normal) * bisector, bisector, 0.5 * (previous.spacing + face.spacing),
+                                     vertexArea, depth, layer});
             }
             for (int k = closed ? 1 : 0; k < face.count; ++k)
                 ofFace[s].push_back({face.at(k + firstPoint, depth), face.normal, face.spacing, face.spacing, depth, layer});
@@ -301,7 +307,8 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
     constexpr int fine = 20000;
     std::vector<double> arc(fine + 1, 0.0);
     const auto point = [&](double theta) { return Vec<2>(axes.x() * std::cos(theta), axes.y() * std::sin(theta)); };
-    for (int k = 1; k <= fine; ++k) arc[k] = arc[k - 1] + (point(2 * std::numbers::pi * k / fine) - point(2 * std::numbers::pi * (k - 1) / fine)).norm();
+    for (int k = 1; k <= fine; ++k)
+        arc[k] = arc[k - 1] + (point(2 * std::numbers::pi * k / fine) - point(2 * std::numbers::pi * (k - 1) / fine)).norm();
     const double perimeter = arc.back();
     WallPatchParticles<2> walls;
     for (int layer = 0; layer < layers; ++layer) {
@@ -356,8 +363,10 @@ std::vector<CoefficientDoc> withLayout(std::vector<CoefficientDoc> own) {
 template <int D>
 auto planar(WallPatchParticles<2> (*generate)(const Dictionary&, double, int, double)) {
     return [generate](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) -> WallPatchParticles<D> {
-        if constexpr (D == 2) return generate(patch, dx, layout.layers, layout.firstLayerOffset);
-        else shapeForOtherDimensions(patch, "wall patch", "2D", D);
+        if constexpr (D == 2)
+            return generate(patch, dx, layout.layers, layout.firstLayerOffset);
+        else
+            shapeForOtherDimensions(patch, "wall patch", "2D", D);
     };
 }
 
@@ -366,37 +375,48 @@ auto planar(WallPatchParticles<2> (*generate)(const Dictionary&, double, int, do
 template <int D>
 WallPatchRegistry<D> makeWallPatchRegistry() {
     WallPatchRegistry<D> registry("wall patch type");
-    registry.add("boxWalls",
-                 {"the shell around a box, the lattice continued outwards, corners included; any extent (the last spacing along a face adjusted); 1D-3D", "",
-                  withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}, {"open", "()", "faces left open: (xMin xMax yMin yMax zMin zMax)"}})},
-                 [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) {
-                     return boxWalls<D>(patch, dx, layout.layers, layout.firstLayerOffset);
-                 });
-    registry.add("box", {"a solid obstacle: its lattice `layers` deep from each face, normals out of the nearest face; 1D-3D", "",
-                         withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}})},
+    registry.add(
+        "boxWalls",
+        {"the shell around a box, the lattice continued outwards, corners included; any extent (the last spacing along a face adjusted); 1D-3D", "",
+         withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}, {"open", "()", "faces left open: (xMin xMax yMin yMax zMin zMax)"}})},
+        [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) {
+            return boxWalls<D>(patch, dx, layout.layers, layout.firstLayerOffset);
+        });
+    registry.add("box",
+                 {"a solid obstacle: its lattice `layers` deep from each face, normals out of the nearest face; 1D-3D", "",
+                  withLayout({{"min", "", "lower corner"}, {"max", "", "upper corner"}})},
                  [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>&) {
                      return boxObstacle<D>(patch, dx, layout.layers, layout.firstLayerOffset);
                  });
-    registry.add("polyline", {"an open path of straight faces, particles at their spacings' centres, corners filled behind a convex turn; 2D", "",
-                              withLayout({{"points", "", "((x y) ...), at least 2"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
-                 planar<D>(wallPathPatch<false>));
-    registry.add("polygon", {"a closed path of straight faces, a particle on every vertex (bisector normal); 2D", "",
-                             withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
-                 planar<D>(wallPathPatch<true>));
+    registry.add(
+        "polyline",
+        {"an open path of straight faces, particles at their spacings' centres, corners filled behind a convex turn; 2D", "",
+         withLayout({{"points", "", "((x y) ...), at least 2"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
+        planar<D>(wallPathPatch<false>));
+    registry.add(
+        "polygon",
+        {"a closed path of straight faces, a particle on every vertex (bisector normal); 2D", "",
+         withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
+        planar<D>(wallPathPatch<true>));
     const std::vector<CoefficientDoc> fluidInside{{"fluidInside", "", "yes: a tank; no: a solid body the fluid regions leave out"}};
-    registry.add("circle", {"a circle at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"radius", "", "[m]"}, fluidInside[0]})}, planar<D>(ellipse));
-    registry.add("ellipse", {"an ellipse at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, fluidInside[0]})},
+    registry.add("circle", {"a circle at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"radius", "", "[m]"}, fluidInside[0]})},
+                 planar<D>(ellipse));
+    registry.add("ellipse",
+                 {"an ellipse at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"semiAxes", "", "(a b) [m]"}, fluidInside[0]})},
                  planar<D>(ellipse));
     registry.add("surface",
-                 {"a closed surface from a file (3D: STL or OBJ; 2D: OBJ polylines or a surface cut at z = slice): one layer sampled on it, more the lattice behind it; 2D, 3D",
+                 {"a closed surface from a file (3D: STL or OBJ; 2D: OBJ polylines or a surface cut at z = slice): one layer sampled on it, more the "
+                  "lattice behind it; 2D, 3D",
                   "",
                   withLayout({{"file", "", "STL or OBJ, relative to the case"},
                               {"scale", "1", "multiplies the file's coordinates"},
                               {"slice", "0", "2D: z of the cut through a surface"},
                               fluidInside[0]})},
                  [](const Dictionary& patch, double dx, const WallLayout& layout, const GenerationDomain<D>& domain) -> WallPatchParticles<D> {
-                     if constexpr (D >= 2) return surfaceWalls<D>(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
-                     else shapeForOtherDimensions(patch, "wall patch", "2D and 3D", D);
+                     if constexpr (D >= 2)
+                         return surfaceWalls<D>(patch, dx, layout, domain.caseDirectory, domain.min, domain.max);
+                     else
+                         shapeForOtherDimensions(patch, "wall patch", "2D and 3D", D);
                  });
     return registry;
 }

@@ -41,7 +41,6 @@ void writeAtomically(const std::filesystem::path& file, const std::function<void
     }
 }
 
-
 void writeDirectoryAtomically(const std::filesystem::path& directory, const std::function<void(const std::filesystem::path&)>& write) {
     const std::filesystem::path temporary = hiddenSibling(directory, "tmp");
     const std::filesystem::path replaced = hiddenSibling(directory, "old");

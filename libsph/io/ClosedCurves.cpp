@@ -36,8 +36,9 @@ ClosedCurves ClosedCurves::read(const std::filesystem::path& file, double scale,
         segments = merge->GetOutput();
     }
     if (segments->GetNumberOfLines() == 0)
-        throw FatalError(data->GetNumberOfPolys() > 0 ? fmt::format("surface file '{}': its surface does not cross the plane z = {}", file.string(), slice)
-                                                      : fmt::format("surface file '{}' holds no polyline (OBJ `l` lines) and no surface to slice", file.string()));
+        throw FatalError(data->GetNumberOfPolys() > 0
+                             ? fmt::format("surface file '{}': its surface does not cross the plane z = {}", file.string(), slice)
+                             : fmt::format("surface file '{}' holds no polyline (OBJ `l` lines) and no surface to slice", file.string()));
     auto stripper = vtkSmartPointer<vtkStripper>::New();
     stripper->SetInputData(segments);
     stripper->JoinContiguousSegmentsOn();
@@ -65,8 +66,8 @@ ClosedCurves ClosedCurves::read(const std::filesystem::path& file, double scale,
         result.loops_.push_back(std::move(loop));
     }
     if (openCurves > 0)
-        throw FatalError(fmt::format("surface file '{}': {} of its {} curves do not close (inside and outside are then undefined)", file.string(), openCurves,
-                                     openCurves + static_cast<int>(result.loops_.size())));
+        throw FatalError(fmt::format("surface file '{}': {} of its {} curves do not close (inside and outside are then undefined)", file.string(),
+                                     openCurves, openCurves + static_cast<int>(result.loops_.size())));
     result.lower_ = Vec<2>::Constant(std::numeric_limits<double>::infinity());
     result.upper_ = -result.lower_;
     for (const auto& loop : result.loops_)

@@ -99,8 +99,8 @@ private:
             advance();
             return token;
         }
-        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(peek())) && !isPunctuation(peek()) &&
-               peek() != '"' && !(peek() == '/' && (peek(1) == '/' || peek(1) == '*'))) {
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(peek())) && !isPunctuation(peek()) && peek() != '"' &&
+               !(peek() == '/' && (peek(1) == '/' || peek(1) == '*'))) {
             token.text += peek();
             advance();
         }
@@ -114,8 +114,8 @@ private:
             if (end == token.text.c_str() + token.text.size()) {
                 // strtod reports overflow (and underflow) through errno and returns inf or 0.
                 if (errno == ERANGE && (std::isinf(value) || value == 0.0))
-                    throw FatalError(token.where, "number " + token.text +
-                                                      " is outside the range of a double (magnitudes 2.2e-308 to 1.8e308, or 0)");
+                    throw FatalError(token.where,
+                                     "number " + token.text + " is outside the range of a double (magnitudes 2.2e-308 to 1.8e308, or 0)");
                 token.kind = Token::Kind::Number;
                 token.number = value;
             }
@@ -132,13 +132,10 @@ private:
 
 std::string readFile(const std::filesystem::path& file) {
     std::error_code ec;
-    if (!std::filesystem::exists(file, ec))
-        throw FatalError("error: cannot open dictionary '" + file.string() + "': file not found");
-    if (std::filesystem::is_directory(file, ec))
-        throw FatalError("error: cannot open dictionary '" + file.string() + "': it is a directory");
+    if (!std::filesystem::exists(file, ec)) throw FatalError("error: cannot open dictionary '" + file.string() + "': file not found");
+    if (std::filesystem::is_directory(file, ec)) throw FatalError("error: cannot open dictionary '" + file.string() + "': it is a directory");
     // A device or pipe (an #include "/dev/zero") would never end.
-    if (!std::filesystem::is_regular_file(file, ec))
-        throw FatalError("error: cannot open dictionary '" + file.string() + "': not a regular file");
+    if (!std::filesystem::is_regular_file(file, ec)) throw FatalError("error: cannot open dictionary '" + file.string() + "': not a regular file");
     constexpr std::uintmax_t maxBytes = 16u << 20;
     if (const std::uintmax_t bytes = std::filesystem::file_size(file, ec); !ec && bytes > maxBytes)
         throw FatalError("error: cannot read dictionary '" + file.string() + "': it is " + std::to_string(bytes >> 20) +
@@ -154,10 +151,14 @@ std::string readFile(const std::filesystem::path& file) {
 class Parser {
 public:
     // `tokenCount` counts every token and entry the file and its includes build, macros expanded.
-    Parser(std::vector<Token> tokens, std::filesystem::path baseDirectory, int includeDepth, int nesting,
-           std::vector<const Dictionary*> scopes, std::size_t& tokenCount)
-        : tokens_(std::move(tokens)), base_(std::move(baseDirectory)), depth_(includeDepth), nesting_(nesting),
-          scopes_(std::move(scopes)), tokenCount_(tokenCount) {
+    Parser(std::vector<Token> tokens, std::filesystem::path baseDirectory, int includeDepth, int nesting, std::vector<const Dictionary*> scopes,
+           std::size_t& tokenCount)
+        : tokens_(std::move(tokens)),
+          base_(std::move(baseDirectory)),
+          depth_(includeDepth),
+          nesting_(nesting),
+          scopes_(std::move(scopes)),
+          tokenCount_(tokenCount) {
         count(tokens_.size(), tokens_.empty() ? SourceLocation{} : tokens_.front().where);
     }
 
@@ -180,8 +181,7 @@ public:
                 }
                 throw FatalError(token.where, "expected a keyword, found " + token.describe());
             }
-            if (token.kind == Token::Kind::Number)
-                throw FatalError(token.where, "expected a keyword, found " + token.describe());
+            if (token.kind == Token::Kind::Number) throw FatalError(token.where, "expected a keyword, found " + token.describe());
             if (token.kind == Token::Kind::Word && token.text == "#include") {
                 parseInclude(target);
                 continue;
@@ -227,7 +227,8 @@ private:
     // does not use them all is no error: one parameter file for every dictionary of a case.
     void parseParameters() {
         auto [inner, file] = openIncluded();
-        auto parameters = std::make_shared<Dictionary>(file.filename().string(), SourceLocation{std::make_shared<const std::string>(file.string()), 0, 0});
+        auto parameters =
+            std::make_shared<Dictionary>(file.filename().string(), SourceLocation{std::make_shared<const std::string>(file.string()), 0, 0});
         inner.parseBody(*parameters, true);
         parameterFiles_.push_back(parameters);
         scopes_.insert(scopes_.end() - 1, parameters.get());  // below the dictionary's own entries, which come first
@@ -292,7 +293,7 @@ private:
             const Entry& source = resolveMacro(macro);
             if (source.isDictionary() || source.tokens().size() != 1 || source.tokens().front().kind != Token::Kind::Number)
                 throw FatalError(expression.where, "#eval \"" + text + "\": macro '" + macro.text + "' must name one number; it names " +
-                                                       (source.isDictionary() ? std::string("a dictionary")
+                                                       (source.isDictionary()         ? std::string("a dictionary")
                                                         : source.tokens().size() != 1 ? std::to_string(source.tokens().size()) + " tokens"
                                                                                       : source.tokens().front().describe()));
             expanded += "(" + source.tokens().front().text + ")";
@@ -398,8 +399,8 @@ private:
     void count(std::size_t added, const SourceLocation& where) {
         tokenCount_ += added;
         if (tokenCount_ > maxTokens)
-            throw FatalError(where, "the dictionary expands to more than " + std::to_string(maxTokens) +
-                                        " tokens (macros that copy each other at every level?)");
+            throw FatalError(
+                where, "the dictionary expands to more than " + std::to_string(maxTokens) + " tokens (macros that copy each other at every level?)");
     }
 
     std::vector<Token> tokens_;
@@ -448,8 +449,7 @@ Dictionary Dictionary::fromFile(const std::filesystem::path& file, const std::st
     return dict;
 }
 
-Dictionary Dictionary::fromString(const std::string& text, const std::string& sourceName,
-                                  const std::filesystem::path& baseDirectory) {
+Dictionary Dictionary::fromString(const std::string& text, const std::string& sourceName, const std::filesystem::path& baseDirectory) {
     auto fileName = std::make_shared<const std::string>(sourceName);
     Dictionary dict(sourceName, SourceLocation{fileName, 0, 0});
     std::size_t tokenCount = 0;
@@ -544,8 +544,8 @@ const Token& singleToken(const Entry& e, const std::string& dictName, const std:
     if (e.isDictionary())
         throw FatalError(e.where(), "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected + ", found a dictionary");
     if (e.tokens().size() != 1)
-        throw FatalError(e.tokens()[1].where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
-                                                  ", found '" + joinTokens(e.tokens()) + "'");
+        throw FatalError(e.tokens()[1].where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected + ", found '" +
+                                                  joinTokens(e.tokens()) + "'");
     return e.tokens().front();
 }
 
@@ -562,12 +562,12 @@ std::vector<Token> listItems(const Entry& e, const std::string& dictName, const 
     std::vector<Token> items(t.begin() + static_cast<long>(first) + 1, t.end() - 1);
     for (const Token& item : items)
         if (item.kind == Token::Kind::Punctuation)
-            throw FatalError(item.where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected +
-                                             ", found nested '" + item.text + "'");
+            throw FatalError(item.where, "keyword '" + e.keyword() + "' in dictionary '" + dictName + "': expected " + expected + ", found nested '" +
+                                             item.text + "'");
     // Compared as numbers: a prefix such as 1e308 or -1 has no size_t value.
     if (first == 1 && t[0].number != static_cast<double>(items.size()))
-        throw FatalError(t[0].where, "keyword '" + e.keyword() + "': list size " + t[0].text + " does not match its " +
-                                         std::to_string(items.size()) + " items");
+        throw FatalError(t[0].where,
+                         "keyword '" + e.keyword() + "': list size " + t[0].text + " does not match its " + std::to_string(items.size()) + " items");
     return items;
 }
 
@@ -602,8 +602,8 @@ bool Dictionary::get<bool>(const std::string& keyword) const {
     const Token& t = singleToken(e, name_, "a switch (yes/no, true/false, on/off)");
     if (t.text == "yes" || t.text == "true" || t.text == "on") return true;
     if (t.text == "no" || t.text == "false" || t.text == "off") return false;
-    throw FatalError(t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected a switch (yes/no, true/false, on/off), found " +
-                                  t.describe());
+    throw FatalError(
+        t.where, "keyword '" + keyword + "' in dictionary '" + name_ + "': expected a switch (yes/no, true/false, on/off), found " + t.describe());
 }
 
 template <>
@@ -652,7 +652,10 @@ std::vector<Vec<D>> Dictionary::getVectorList(const std::string& keyword) const 
     const Entry& e = entry(keyword);
     const auto& t = e.tokens();
     const auto bad = [&]() {
-        fail(keyword, std::string("expected a list of ") + std::to_string(D) + "D points " + (D == 1 ? "((x) ...)" : D == 2 ? "((x y) ...)" : "((x y z) ...)"));
+        fail(keyword, std::string("expected a list of ") + std::to_string(D) + "D points " +
+                          (D == 1   ? "((x) ...)"
+                           : D == 2 ? "((x y) ...)"
+                                    : "((x y z) ...)"));
     };
     if (e.isDictionary() || t.size() < 2 || t.front().text != "(" || t.back().text != ")") bad();
     std::vector<Vec<D>> points;

@@ -55,15 +55,14 @@ public:
     // Reads and parses a file; a missing or unreadable file is a FatalError naming it.
     static Dictionary fromFile(const std::filesystem::path& file, const std::string& name = "");
     // Parses text; `sourceName` stands for the file in messages and `#include` is relative to `baseDirectory`.
-    static Dictionary fromString(const std::string& text, const std::string& sourceName,
-                                 const std::filesystem::path& baseDirectory = ".");
+    static Dictionary fromString(const std::string& text, const std::string& sourceName, const std::filesystem::path& baseDirectory = ".");
 
     const std::string& name() const { return name_; }
     const SourceLocation& where() const { return where_; }
 
     bool found(const std::string& keyword) const;
     std::vector<std::string> keywords() const;
-    std::size_t tokenCount() const;  // entries and value tokens, sub-dictionaries included
+    std::size_t tokenCount() const;                            // entries and value tokens, sub-dictionaries included
     const Entry* findEntry(const std::string& keyword) const;  // marks it used; nullptr if absent
     const Entry& entry(const std::string& keyword) const;      // FatalError if absent
 

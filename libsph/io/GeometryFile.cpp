@@ -18,9 +18,12 @@ vtkSmartPointer<vtkPolyData> readGeometryFile(const std::filesystem::path& file,
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     vtkSmartPointer<vtkAbstractPolyDataReader> reader;
-    if (extension == ".stl") reader = vtkSmartPointer<vtkSTLReader>::New();
-    else if (extension == ".obj") reader = vtkSmartPointer<vtkOBJReader>::New();
-    else throw FatalError(fmt::format("surface file '{}': unknown extension '{}'; valid: {}", file.string(), extension, valid));
+    if (extension == ".stl")
+        reader = vtkSmartPointer<vtkSTLReader>::New();
+    else if (extension == ".obj")
+        reader = vtkSmartPointer<vtkOBJReader>::New();
+    else
+        throw FatalError(fmt::format("surface file '{}': unknown extension '{}'; valid: {}", file.string(), extension, valid));
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) throw FatalError(fmt::format("surface file '{}' does not exist", file.string()));
     vtkObject::GlobalWarningDisplayOff();

@@ -179,7 +179,8 @@ ParticleSet<D> readParticleFile(const std::filesystem::path& file, const std::st
     vtkSmartPointer<vtkUnstructuredGrid> grid = readGrid(file);
     header = headerOf(grid, file);
     if (header.dimension != D)
-        throw FatalError("error: particle file '" + file.string() + "' is " + std::to_string(header.dimension) + "D, expected " + std::to_string(D) + "D");
+        throw FatalError("error: particle file '" + file.string() + "' is " + std::to_string(header.dimension) + "D, expected " + std::to_string(D) +
+                         "D");
     const vtkIdType n = grid->GetNumberOfPoints();
     ParticleSet<D> set(setName);
     set.resize(static_cast<std::size_t>(n));
@@ -220,7 +221,7 @@ ParticleSet<D> readParticleFile(const std::filesystem::path& file, const std::st
 
 StateHeader readParticleFileHeader(const std::filesystem::path& file) { return headerOf(readGrid(file), file); }
 
-#define SPHKIT_INSTANTIATE(D)                                                                                   \
+#define SPHKIT_INSTANTIATE(D)                                                                                    \
     template void writeParticleFile<D>(const std::filesystem::path&, const ParticleSet<D>&, const StateHeader&); \
     template ParticleSet<D> readParticleFile<D>(const std::filesystem::path&, const std::string&, StateHeader&);
 SPHKIT_INSTANTIATE(1)

@@ -89,9 +89,10 @@ TriangleSurface TriangleSurface::read(const std::filesystem::path& file, double 
     }
     const auto open = std::count_if(edgeUses.begin(), edgeUses.end(), [](const auto& use) { return use.second != 2; });
     if (open > 0)
-        throw FatalError(fmt::format("surface file '{}' is not closed: {} of its {} edges do not join exactly two triangles "
-                                     "(inside and outside are then undefined)",
-                                     file.string(), open, edgeUses.size()));
+        throw FatalError(
+            fmt::format("surface file '{}' is not closed: {} of its {} edges do not join exactly two triangles "
+                        "(inside and outside are then undefined)",
+                        file.string(), open, edgeUses.size()));
     // Consistent order makes every normal outward or every one inward: the enclosed volume's sign says which.
     if (signedVolume < 0.0)
         for (Triangle& t : result.triangles_) {

@@ -27,7 +27,7 @@ struct ArrayLayout {
     std::string name, type, section;
     std::uint64_t offset = 0;
     std::optional<std::uint64_t> values;  // elements (strings, for a String array) the header implies; none for connectivity
-    std::uint64_t leastValues = 0;         // for connectivity: a point per cell at least
+    std::uint64_t leastValues = 0;        // for connectivity: a point per cell at least
 };
 
 class LayoutError {
@@ -89,9 +89,8 @@ std::uint64_t countOf(const XmlTag& tag, const std::string& attribute, const Lay
 }
 
 std::uint64_t bytesOfType(const std::string& type) {
-    static const std::map<std::string, std::uint64_t> sizes{{"Int8", 1},    {"UInt8", 1},   {"Int16", 2},   {"UInt16", 2},
-                                                            {"Int32", 4},   {"UInt32", 4},  {"Int64", 8},   {"UInt64", 8},
-                                                            {"Float32", 4}, {"Float64", 8}, {"String", 1}};
+    static const std::map<std::string, std::uint64_t> sizes{{"Int8", 1},  {"UInt8", 1},  {"Int16", 2},   {"UInt16", 2},  {"Int32", 4}, {"UInt32", 4},
+                                                            {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}, {"String", 1}};
     const auto found = sizes.find(type);
     return found == sizes.end() ? 0 : found->second;
 }
@@ -112,8 +111,9 @@ FileHeader readXmlPart(const std::filesystem::path& file, std::uint64_t fileSize
     const std::size_t appended = text.find("<AppendedData");
     if (appended == std::string::npos) {
         if (text.find("format=\"ascii\"") != std::string::npos || text.find("format=\"binary\"") != std::string::npos)
-            fail("its arrays are stored inline (format=\"ascii\" or \"binary\"); sphkit reads appended raw data, as it writes "
-                 "it (in ParaView: Save Data, Data Mode Appended, Encode Appended Data off)");
+            fail(
+                "its arrays are stored inline (format=\"ascii\" or \"binary\"); sphkit reads appended raw data, as it writes "
+                "it (in ParaView: Save Data, Data Mode Appended, Encode Appended Data off)");
         fail("has no <AppendedData> section within its first MiB (not a state file written by sphkit or ParaView?)");
     }
     const std::size_t tagEnd = text.find('>', appended);
@@ -145,7 +145,8 @@ void checkStrings(const ArrayLayout& array, const std::string& where, const std:
             uLongf length = static_cast<uLongf>(expected);
             const int status = ::uncompress(reinterpret_cast<Bytef*>(block.data()), &length, reinterpret_cast<const Bytef*>(stored.data() + at),
                                             static_cast<uLong>(sizes[b]));
-            if (status != Z_OK || length != expected) fail(where + " has a compressed block that does not inflate to its " + std::to_string(expected) + " bytes");
+            if (status != Z_OK || length != expected)
+                fail(where + " has a compressed block that does not inflate to its " + std::to_string(expected) + " bytes");
             text += block;
             at += static_cast<std::size_t>(sizes[b]);
         }
@@ -171,9 +172,8 @@ void checkVtuLayout(const std::filesystem::path& file) {
     std::vector<ArrayLayout> arrays;
     // VTK's reader dereferences what it makes of an element it does not know (found by fuzzing:
     // <DataArrayy> in FieldData crashed it): only the elements of an unstructured grid pass.
-    static const std::vector<std::string> elements{"VTKFile",  "UnstructuredGrid", "FieldData", "Piece",          "PointData", "CellData",
-                                                   "Points",   "Cells",            "DataArray", "Array",          "AppendedData",
-                                                   "InformationKey", "Value"};
+    static const std::vector<std::string> elements{"VTKFile", "UnstructuredGrid", "FieldData", "Piece",        "PointData",      "CellData", "Points",
+                                                   "Cells",   "DataArray",        "Array",     "AppendedData", "InformationKey", "Value"};
     for (const XmlTag& tag : tags) {
         const std::string element = tag.name.starts_with("/") ? tag.name.substr(1) : tag.name;
         if (std::find(elements.begin(), elements.end(), element) == elements.end())
@@ -184,8 +184,7 @@ void checkVtuLayout(const std::filesystem::path& file) {
             if (++pieces > 1) fail("has more than one <Piece>; sphkit writes one");
             points = countOf(tag, "NumberOfPoints", fail);
             cells = countOf(tag, "NumberOfCells", fail);
-        } else if (tag.name == "FieldData" || tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" ||
-                   tag.name == "Cells") {
+        } else if (tag.name == "FieldData" || tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" || tag.name == "Cells") {
             if (!tag.selfClosing) section = tag.name;
         } else if (tag.name.starts_with("/") && tag.name != "/DataArray" && tag.name != "/Array") {
             section.clear();

@@ -13,8 +13,7 @@ namespace sph {
 
 template <int D>
 struct WendlandC2 {
-    explicit WendlandC2(double smoothingLength)
-        : h(smoothingLength), invH(1.0 / smoothingLength), sigma(normalisation(smoothingLength)) {}
+    explicit WendlandC2(double smoothingLength) : h(smoothingLength), invH(1.0 / smoothingLength), sigma(normalisation(smoothingLength)) {}
 
     double supportRadius() const { return 2.0 * h; }
 

@@ -83,16 +83,27 @@ void FreeBody2D::correct(double dt) {
 // repeats (the loads then come out as they did).
 std::vector<double> FreeBody2D::savedState() const {
     const LoadHistory& h = beforeLastLoads_;
-    return {state_.position.x(), state_.position.y(), state_.velocity.x(), state_.velocity.y(), state_.angle, state_.angularVelocity,
-            h.last.t, h.last.acceleration.x(), h.last.acceleration.y(), h.last.angularAcceleration,
-            h.previous.t, h.previous.acceleration.x(), h.previous.acceleration.y(), h.previous.angularAcceleration,
+    return {state_.position.x(),
+            state_.position.y(),
+            state_.velocity.x(),
+            state_.velocity.y(),
+            state_.angle,
+            state_.angularVelocity,
+            h.last.t,
+            h.last.acceleration.x(),
+            h.last.acceleration.y(),
+            h.last.angularAcceleration,
+            h.previous.t,
+            h.previous.acceleration.x(),
+            h.previous.acceleration.y(),
+            h.previous.angularAcceleration,
             static_cast<double>(h.samples)};
 }
 
 void FreeBody2D::restore(const std::vector<double>& saved, const std::string& source) {
     if (saved.size() != savedState().size() || !std::all_of(saved.begin(), saved.end(), [](double v) { return std::isfinite(v); }))
-        throw FatalError(fmt::format("error: '{}': the saved free-body state has {} values, expected {} finite values (a corrupt state file?)", source,
-                                     saved.size(), savedState().size()));
+        throw FatalError(fmt::format("error: '{}': the saved free-body state has {} values, expected {} finite values (a corrupt state file?)",
+                                     source, saved.size(), savedState().size()));
     state_ = {{saved[0], saved[1]}, {saved[2], saved[3]}, saved[4], saved[5]};
     start_ = state_;
     loads_.last = {saved[6], {saved[7], saved[8]}, saved[9]};

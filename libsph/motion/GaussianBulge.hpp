@@ -21,7 +21,9 @@ template <int D>
 class GaussianBulge : public PatchMotion<D> {
 public:
     explicit GaussianBulge(const Dictionary& dict)
-        : centre_(dict.getVector<D>("centre")), amplitude_(dict.get<double>("amplitude")), width_(dict.getPositive("width")),
+        : centre_(dict.getVector<D>("centre")),
+          amplitude_(dict.get<double>("amplitude")),
+          width_(dict.getPositive("width")),
           omega_(2.0 * std::numbers::pi / dict.getPositive("period")) {}
     std::string describe() const override {
         return fmt::format("gaussianBulge: centre ({:g}), amplitude {:g}, width {:g}, period {:g}", fmt::join(centre_, " "), amplitude_, width_,

@@ -29,8 +29,8 @@ MotionTable<D>::MotionTable(const Dictionary& dict, const std::string& caseDirec
             throw FatalError(fmt::format("error: motion table '{}', line {}: expected numbers, found '{}'", file_, lineNumber, line));
         }
         if (values.size() != static_cast<std::size_t>(D + 1))
-            throw FatalError(fmt::format("error: motion table '{}', line {}: expected {} columns (t and a {}D displacement), found {}", file_, lineNumber,
-                                         D + 1, D, values.size()));
+            throw FatalError(fmt::format("error: motion table '{}', line {}: expected {} columns (t and a {}D displacement), found {}", file_,
+                                         lineNumber, D + 1, D, values.size()));
         if (!times_.empty() && !(values[0] > times_.back()))
             throw FatalError(fmt::format("error: motion table '{}', line {}: time {:g} does not increase", file_, lineNumber, values[0]));
         times_.push_back(values[0]);

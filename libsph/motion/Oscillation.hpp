@@ -21,8 +21,10 @@ template <int D>
 class Oscillation : public PatchMotion<D> {
 public:
     explicit Oscillation(const Dictionary& dict)
-        : amplitude_(dict.getVector<D>("amplitude")), omega_(2.0 * std::numbers::pi * dict.getPositive("frequency")),
-          phase_(dict.getOrDefault("phase", 0.0)), rampTime_(dict.getNonNegativeOrDefault("rampTime", 0.0)) {}
+        : amplitude_(dict.getVector<D>("amplitude")),
+          omega_(2.0 * std::numbers::pi * dict.getPositive("frequency")),
+          phase_(dict.getOrDefault("phase", 0.0)),
+          rampTime_(dict.getNonNegativeOrDefault("rampTime", 0.0)) {}
     std::string describe() const override {
         return fmt::format("oscillation: amplitude ({:g}), frequency {:g}, phase {:g}, rampTime {:g}", fmt::join(amplitude_, " "),
                            omega_ / (2.0 * std::numbers::pi), phase_, rampTime_);

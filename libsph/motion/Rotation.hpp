@@ -16,7 +16,9 @@ namespace sph {
 class Rotation : public PatchMotion<2> {
 public:
     explicit Rotation(const Dictionary& dict)
-        : centre_(dict.getVector<2>("centre")), omega_(dict.getOrDefault("omega", 0.0)), amplitude_(dict.getOrDefault("amplitude", 0.0)),
+        : centre_(dict.getVector<2>("centre")),
+          omega_(dict.getOrDefault("omega", 0.0)),
+          amplitude_(dict.getOrDefault("amplitude", 0.0)),
           angularFrequency_(2.0 * std::numbers::pi * dict.getNonNegativeOrDefault("frequency", 0.0)) {}
     std::string describe() const override {
         return fmt::format("rotation: centre ({:g}), omega {:g}, amplitude {:g}, frequency {:g}", fmt::join(centre_, " "), omega_, amplitude_,

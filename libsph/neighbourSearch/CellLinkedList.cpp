@@ -21,9 +21,10 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
     double cellCount = 1.0;
     for (int d = 0; d < D; ++d) cellCount *= std::max(1.0, std::ceil((upper[d] - lower[d]) / cellSize));
     if (!(cellCount < 4294967295.0))
-        throw FatalError(fmt::format("error: the domain from ({:g}) to ({:g}) would need {:.3g} neighbour-search cells of size {:g} "
-                                     "(at most 4294967294): the spacing is too small for the domain, or the domain too large",
-                                     fmt::join(lower.data(), lower.data() + D, " "), fmt::join(upper.data(), upper.data() + D, " "), cellCount, cellSize));
+        throw FatalError(
+            fmt::format("error: the domain from ({:g}) to ({:g}) would need {:.3g} neighbour-search cells of size {:g} "
+                        "(at most 4294967294): the spacing is too small for the domain, or the domain too large",
+                        fmt::join(lower.data(), lower.data() + D, " "), fmt::join(upper.data(), upper.data() + D, " "), cellCount, cellSize));
     requireMemory(9.0 * cellCount, fmt::format("the neighbour search over the domain ({:.3g} cells of size {:g})", cellCount, cellSize));
     std::size_t cells = 1;
     for (int d = 0; d < D; ++d) {
@@ -33,7 +34,7 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
         int n = std::max(1, static_cast<int>(std::ceil(extent / cellSize)));
         if (periodic_[dd]) {
             n = static_cast<int>(std::floor(extent / cellSize));  // cells no smaller than cellSize, tiling the period
-            if (n < 2 * reach + 1)  // else a query would meet a cell twice
+            if (n < 2 * reach + 1)                                // else a query would meet a cell twice
                 throw std::invalid_argument("cell-linked list: a periodic direction must be at least 2.5 support radii long");
             anyPeriodic_ = true;
             period_[dd] = extent;
@@ -187,9 +188,8 @@ void CellLinkedList<D>::markCellsNear() {
     std::fill(pointNear_.begin(), pointNear_.end(), 0);
     for (std::size_t k = 0; k < sortedCell_.size(); ++k) {
         if (k > 0 && sortedCell_[k] == sortedCell_[k - 1]) continue;
-        forEachStencilRow<D>(cellCoordinates(sortedPosition_[k]), dims_, periodic_, [&](long first, long last) {
-            std::fill(pointNear_.begin() + first, pointNear_.begin() + last + 1, 1);
-        });
+        forEachStencilRow<D>(cellCoordinates(sortedPosition_[k]), dims_, periodic_,
+                             [&](long first, long last) { std::fill(pointNear_.begin() + first, pointNear_.begin() + last + 1, 1); });
     }
 }
 

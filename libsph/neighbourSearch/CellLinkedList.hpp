@@ -162,7 +162,8 @@ private:
     std::size_t cellIndex(const Vec<D>& x) const {
         const std::array<int, D> c = cellCoordinates(x);
         std::size_t index = 0;
-        for (int d = D - 1; d >= 0; --d) index = index * static_cast<std::size_t>(dims_[static_cast<std::size_t>(d)]) + static_cast<std::size_t>(c[static_cast<std::size_t>(d)]);
+        for (int d = D - 1; d >= 0; --d)
+            index = index * static_cast<std::size_t>(dims_[static_cast<std::size_t>(d)]) + static_cast<std::size_t>(c[static_cast<std::size_t>(d)]);
         return index;
     }
     void markCellsNear();
@@ -173,11 +174,11 @@ private:
     std::array<bool, D> periodic_;
     bool anyPeriodic_ = false;
     std::array<double, D> period_{}, inversePeriod_{};  // 0 where not periodic
-    std::vector<std::uint32_t> cellStart_;  // size cells + 1
-    std::vector<std::uint32_t> sorted_;     // cell order -> point index
-    std::vector<Vec<D>> sortedPosition_;   // positions in cell order, read contiguously by queries
-    std::vector<std::uint32_t> sortedCell_;  // cell of each place
-    std::vector<std::uint8_t> pointNear_;    // per cell, when kept: 1 if a point lies in its stencil
+    std::vector<std::uint32_t> cellStart_;              // size cells + 1
+    std::vector<std::uint32_t> sorted_;                 // cell order -> point index
+    std::vector<Vec<D>> sortedPosition_;                // positions in cell order, read contiguously by queries
+    std::vector<std::uint32_t> sortedCell_;             // cell of each place
+    std::vector<std::uint8_t> pointNear_;               // per cell, when kept: 1 if a point lies in its stencil
     // Scratch of build, kept so as not to allocate it again every step.
     std::vector<std::uint32_t> cellOf_;        // cell of each point
     std::vector<std::uint32_t> nextPlace_;     // per cell: its count, then its next place

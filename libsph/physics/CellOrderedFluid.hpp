@@ -14,11 +14,11 @@ namespace sph {
 template <int D>
 struct CellOrderedFluid {
     std::vector<double> mass;
-    std::vector<double> pressureOverDensity2;  // pressure gradient
-    std::vector<Vec<D>> velocity;              // continuity, viscosity
-    std::vector<double> density;               // viscosity, density diffusion
-    std::vector<double> volume;                // density diffusion
-    std::vector<Vec<D>> densityGradient;       // delta-SPH's renormalised gradient
+    std::vector<double> pressureOverDensity2;       // pressure gradient
+    std::vector<Vec<D>> velocity;                   // continuity, viscosity
+    std::vector<double> density;                    // viscosity, density diffusion
+    std::vector<double> volume;                     // density diffusion
+    std::vector<Vec<D>> densityGradient;            // delta-SPH's renormalised gradient
     std::vector<std::vector<Vec<D>>> acceleration;  // per thread
     std::vector<std::vector<double>> densityRate;   // per thread, continuity only
 

@@ -37,7 +37,12 @@ FluidProperties<D> readFluidProperties(const Dictionary& dict);
 // What the models are built with, for spacing dx and smoothing length h.
 template <int D>
 ModelContext modelContext(const FluidProperties<D>& properties, double dx, double h) {
-    return {dx, h, properties.c0, properties.rho0, properties.nu, std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
+    return {dx,
+            h,
+            properties.c0,
+            properties.rho0,
+            properties.nu,
+            std::visit([](const auto& e) { return e.stiffness(); }, properties.eos),
             std::visit([](const auto& e) { return e.exponent(); }, properties.eos)};
 }
 

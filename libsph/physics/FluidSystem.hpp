@@ -70,9 +70,8 @@ class FluidSystem {
 public:
     // Takes the particle sets as read from the state files: the fluid set must hold velocity,
     // density and mass; the wall set position, normal, area, mass and patch, sorted by patch.
-    FluidSystem(FluidModels<D> models, ParticleSet<D> fluid, ParticleSet<D> walls, std::vector<Patch<D>> patches,
-                const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
-                const std::array<bool, D>& periodic = {});
+    FluidSystem(FluidModels<D> models, ParticleSet<D> fluid, ParticleSet<D> walls, std::vector<Patch<D>> patches, const Vec<D>& domainMin,
+                const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime, const std::array<bool, D>& periodic = {});
 
     // Free bodies: the integrator advances them with the fluid (see FreeBody2D).
     void predictBodies(double halfDt);

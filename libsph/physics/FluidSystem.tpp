@@ -33,17 +33,25 @@ template <>
 inline constexpr bool dimensionCompiled<3> = true;
 #endif
 template <int D, class Kernel>
-inline constexpr bool pairLoopsCompiled = dimensionCompiled<D> && compiledKernel<Kernel>;
+inline constexpr bool pairLoopsCompiled = dimensionCompiled<D>&& compiledKernel<Kernel>;
 constexpr const char* pairLoopsNotCompiled = "this pair loop is not compiled (SPHKIT_KERNELS, SPHKIT_DIMENSIONS); the case reader rejects it";
 
 template <int D>
 FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
                             const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
                             const std::array<bool, D>& periodic)
-    : fluid(std::move(fluidSet)), walls(std::move(wallSet)), patches(std::move(patchList)), models_(std::move(models)),
-      domainMin_(domainMin), domainMax_(domainMax), periodic_(periodic), gravity_(gravity), gravityRampTime_(gravityRampTime),
+    : fluid(std::move(fluidSet)),
+      walls(std::move(wallSet)),
+      patches(std::move(patchList)),
+      models_(std::move(models)),
+      domainMin_(domainMin),
+      domainMax_(domainMax),
+      periodic_(periodic),
+      gravity_(gravity),
+      gravityRampTime_(gravityRampTime),
       supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
-      fluidCells_(domainMin, domainMax, supportRadius_, periodic), wallCells_(domainMin, domainMax, supportRadius_, periodic) {
+      fluidCells_(domainMin, domainMax, supportRadius_, periodic),
+      wallCells_(domainMin, domainMax, supportRadius_, periodic) {
     fluid.addScalar("pressure", 0.0);
     fluid.addVector("acceleration", Vec<D>::Zero());
     if (continuity()) fluid.addScalar("densityRate", 0.0);
@@ -251,7 +259,8 @@ template <int D>
 void FluidSystem<D>::addWallForces(double t) {
     auto timer = timers.time(Stage::Boundary);
     if (keepsUncorrectedAcceleration_) fluid.vector("uncorrectedAcceleration") = fluid.vector("acceleration");
-    if (fluid.hasVector("boundaryCorrection")) std::fill(fluid.vector("boundaryCorrection").begin(), fluid.vector("boundaryCorrection").end(), Vec<D>::Zero());
+    if (fluid.hasVector("boundaryCorrection"))
+        std::fill(fluid.vector("boundaryCorrection").begin(), fluid.vector("boundaryCorrection").end(), Vec<D>::Zero());
     auto& acceleration = fluid.vector("acceleration");
     for (Patch<D>& patch : patches) {
         if (!patch.cells) continue;
@@ -302,8 +311,10 @@ void FluidSystem<D>::computeSummationDensity() {
 #pragma omp parallel for schedule(static)
                 for (std::size_t i = 0; i < n; ++i) {
                     double sum = 0.0;
-                    fluidCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
-                    wallCells_.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) { sum += wallMass[j] * kernel.value(std::sqrt(r2)); });
+                    fluidCells_.forEachNeighbour(x[i], radius,
+                                                 [&](std::uint32_t j, const Vec<D>&, double r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
+                    wallCells_.forEachNeighbour(x[i], radius,
+                                                [&](std::uint32_t j, const Vec<D>&, double r2) { sum += wallMass[j] * kernel.value(std::sqrt(r2)); });
                     rho[i] = sum;
                 }
             }
@@ -362,10 +373,13 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     const double radius = s.supportRadius(), radius2 = radius * radius;
     // The loops over pairs come in two versions, chosen once per evaluation: without periodic
     // directions (wraps is std::false_type) a separation costs three instructions fewer per
-    // direction (forces 2-4 % faster in 2D, 0-5 % in 3D). The wall list has the same grid.
+    // direction (doc/performance.md, "Separations without the nearest-image term"). The wall list
+    // has the same grid.
     const auto withWraps = [&cells](auto&& loop) {
-        if (cells.anyPeriodic()) loop(std::true_type{});
-        else loop(std::false_type{});
+        if (cells.anyPeriodic())
+            loop(std::true_type{});
+        else
+            loop(std::false_type{});
     };
     const double eta2 = viscousRegularisation(s.smoothingLength());
     const auto& wallCells = s.wallCells();
@@ -373,8 +387,9 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
     const auto threads = static_cast<std::size_t>(omp_get_max_threads());
     constexpr std::size_t chunk = 256;
     // Pairs in vector lanes (AVX2: four doubles) where a particle has many: 87 pairs in the 3D
-    // benchmark, 1.5x faster. With 12 (2D), the loop over them in lanes, its padding and the
-    // separate scatter cost 5-15 % more than one fused scalar loop, which 2D keeps.
+    // benchmark. With 12 (2D), the loop over them in lanes, its padding and the separate scatter
+    // cost more than one fused scalar loop, which 2D keeps (doc/performance.md, "Pairs in vector
+    // lanes (3D)").
     constexpr std::size_t lanes = D == 3 ? 4 : 1;
     ordered.mass.resize(n);
     if constexpr (Pressure) ordered.pressureOverDensity2.resize(n);
@@ -511,15 +526,19 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                     if constexpr (Pressure) alongR -= (pTermKk + pTermK[l]) * F;
                     if constexpr (Viscosity::enabled) {
                         const double factor = viscosity.pairFactor(vDotR, r2, inverseRegularisedR2, rhoKk, rhoK[l], F);
-                        if constexpr (Viscosity::alongSeparation) alongR += factor;
-                        else alongV += factor;
+                        if constexpr (Viscosity::alongSeparation)
+                            alongR += factor;
+                        else
+                            alongV += factor;
                     }
                     const auto accumulate = [&](int d, double& sum) {
                         double perMass = alongR * r[d];
                         if constexpr (AlongVelocity) perMass += alongV * vkl[d];
                         sum += mK[l] * perMass;
-                        if constexpr (lanes > 1) toL[d * stride + q] = -mKk * perMass;
-                        else as[l * D + d] -= mKk * perMass;
+                        if constexpr (lanes > 1)
+                            toL[d * stride + q] = -mKk * perMass;
+                        else
+                            as[l * D + d] -= mKk * perMass;
                     };
                     accumulate(0, a0);
                     if constexpr (D > 1) accumulate(1, a1);
@@ -542,8 +561,10 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                             toNeighbourDensity += diffusionToL * volumeKk;
                         }
                         densityRateK += toK;
-                        if constexpr (lanes > 1) toL[D * stride + q] = toNeighbourDensity;
-                        else drhoK[l] += toNeighbourDensity;
+                        if constexpr (lanes > 1)
+                            toL[D * stride + q] = toNeighbourDensity;
+                        else
+                            drhoK[l] += toNeighbourDensity;
                     }
                 }
                 if constexpr (lanes > 1) {
@@ -577,7 +598,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                 [[maybe_unused]] const double pOverRho2 = p[i] / (rho[i] * rho[i]);
                 if (cells.cellAt(k) != wallStencilCell) {  // the wall list has the fluid list's grid
                     wallStencilCell = cells.cellAt(k);
-                    wallStencil = wallCells.anyPointNear(wallStencilCell) ? wallCells.stencilRanges(x[i]) : typename CellLinkedList<D>::StencilRanges{};
+                    wallStencil =
+                        wallCells.anyPointNear(wallStencilCell) ? wallCells.stencilRanges(x[i]) : typename CellLinkedList<D>::StencilRanges{};
                 }
                 if constexpr (lanes == 1) {
                     wallCells.forEachNeighbour(wallStencil, x[i], radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
@@ -615,8 +637,8 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
                         }
                         const double F = (q < count ? 1.0 : 0.0) * kernel.gradientFactor(std::sqrt(r2));
                         double alongR = 0.0, alongV = 0.0;
-                        fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoI, mWall[w], wall.pressure[w], wall.density[w], alongR,
-                                                   alongV);
+                        fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoI, mWall[w], wall.pressure[w], wall.density[w],
+                                                   alongR, alongV);
                         const auto component = [&](int d) {
                             double component = alongR * r[d];
                             if constexpr (AlongVelocity) component += alongV * (vi[d] - viscousVw[w * D + d]);
@@ -637,8 +659,10 @@ void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, 
             }
         };
         // The scalar pass's forEachNeighbour takes the nearest image itself: one version is enough.
-        if constexpr (lanes == 1) wallPass(std::false_type{});
-        else withWraps(wallPass);
+        if constexpr (lanes == 1)
+            wallPass(std::false_type{});
+        else
+            withWraps(wallPass);
     }
 }
 
@@ -673,8 +697,10 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
             if (terms == RateTerms::All) {
                 dispatch.template operator()<false>(kernel, viscosity, diffusion);
             } else if constexpr (Viscosity::enabled) {  // without viscosity the split is trivial
-                if (terms == RateTerms::AllButViscous) dispatch.template operator()<false>(kernel, NoViscosity{}, diffusion);
-                else dispatch.template operator()<true>(kernel, viscosity, NoDensityDiffusion{});
+                if (terms == RateTerms::AllButViscous)
+                    dispatch.template operator()<false>(kernel, NoViscosity{}, diffusion);
+                else
+                    dispatch.template operator()<true>(kernel, viscosity, NoDensityDiffusion{});
             } else if (terms == RateTerms::AllButViscous) {
                 dispatch.template operator()<false>(kernel, viscosity, diffusion);
             } else {

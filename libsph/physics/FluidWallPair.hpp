@@ -20,8 +20,10 @@ inline double viscousRegularisation(double smoothingLength) { return 0.01 * smoo
 // then does a pair loop evaluate one; with any other it is left out, not multiplied by zero.
 template <class Viscosity>
 inline constexpr bool actsAlongVelocity = [] {
-    if constexpr (Viscosity::enabled) return !Viscosity::alongSeparation;
-    else return false;
+    if constexpr (Viscosity::enabled)
+        return !Viscosity::alongSeparation;
+    else
+        return false;
 }();
 
 template <int D>
@@ -42,8 +44,10 @@ inline void fluidWallFactors(const Viscosity& viscosity, double viwDotR, double 
     if constexpr (Pressure) alongR -= wallMass * (pOverRho2 + wallPressure / (wallDensity * wallDensity)) * F;
     if constexpr (Viscosity::enabled) {
         const double factor = wallMass * viscosity.pairFactor(viwDotR, r2, 1.0 / (r2 + eta2), rhoFluid, wallDensity, F);
-        if constexpr (Viscosity::alongSeparation) alongR += factor;
-        else alongV += factor;
+        if constexpr (Viscosity::alongSeparation)
+            alongR += factor;
+        else
+            alongV += factor;
     }
 }
 
@@ -54,8 +58,10 @@ inline Vec<D> fluidWallAcceleration(const Viscosity& viscosity, const Vec<D>& r,
     const double viwDotR = Viscosity::enabled ? viw.dot(r) : 0.0;
     double alongR = 0.0, alongV = 0.0;
     fluidWallFactors<Pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoFluid, wall.mass[w], wall.pressure[w], wall.density[w], alongR, alongV);
-    if constexpr (actsAlongVelocity<Viscosity>) return alongR * r + alongV * viw;
-    else return alongR * r;
+    if constexpr (actsAlongVelocity<Viscosity>)
+        return alongR * r + alongV * viw;
+    else
+        return alongR * r;
 }
 
 }  // namespace sph

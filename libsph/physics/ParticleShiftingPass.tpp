@@ -74,7 +74,8 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 const double* wallDensity = anyWalls ? walls.scalar("density").data() : nullptr;
                 const Vec<D>* wallNormal = anyWalls ? walls.vector("normal").data() : nullptr;
                 const double* wallArea = anyWalls && walls.hasScalar("area") ? walls.scalar("area").data() : nullptr;
-                const bool oneLayerWalls = wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
+                const bool oneLayerWalls =
+                    wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
                 ParticleShiftingScratch<D>& scratch = shiftingScratch_;
                 // Its table depends on the kernel alone: built at the first step that needs it.
                 if (oneLayerWalls && !scratch.outsideFraction) scratch.outsideFraction.emplace(kernel);
@@ -152,8 +153,10 @@ void FluidSystem<D>::shiftParticles(double dt) {
                             }
                         }  // implicit barrier: every pair is in
                     };
-                    if (cells.anyPeriodic()) fluidPairs(std::true_type{});
-                    else fluidPairs(std::false_type{});
+                    if (cells.anyPeriodic())
+                        fluidPairs(std::true_type{});
+                    else
+                        fluidPairs(std::false_type{});
                     stencilCell = std::numeric_limits<std::uint32_t>::max();
 #pragma omp for schedule(static, 256)
                     for (std::size_t k = 0; k < places; ++k) {
@@ -162,7 +165,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
                         if (cells.cellAt(k) != stencilCell) {  // the wall list has the fluid list's grid
                             stencilCell = cells.cellAt(k);
                             wallStencil = wallCells_.anyPointNear(stencilCell) ? wallCells_.stencilRanges(cells.sortedPosition(k))
-                                                                             : typename CellLinkedList<D>::StencilRanges{};
+                                                                               : typename CellLinkedList<D>::StencilRanges{};
                         }
                         Sums total;
                         for (std::size_t t = 0; t < team; ++t) {
@@ -187,7 +190,8 @@ void FluidSystem<D>::shiftParticles(double dt) {
                             nearWall[i] = 1;
                         });
                         // Renormalised by the particles' own moment (exact for a linear field whatever the support holds).
-                        densityGradient[i] = std::abs(moment.determinant()) > 0.1 ? Vec<D>(moment.inverse() * densityDifferences) : densityDifferences;
+                        densityGradient[i] =
+                            std::abs(moment.determinant()) > 0.1 ? Vec<D>(moment.inverse() * densityDifferences) : densityDifferences;
                         if (oneLayerWalls) {
                             double behindWall = 0.0;
                             forEachWallElement(x, [&](std::uint32_t w, const Vec<D>& r, double r2) {

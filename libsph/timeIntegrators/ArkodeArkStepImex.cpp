@@ -41,9 +41,10 @@ template <int D>
 std::string ArkodeArkStepImex<D>::describe() const {
     const std::string jacobian = krylov_.jacobian == JacobianTimesVector::VelocityBlock ? "velocityBlock" : "differenceQuotient";
     const std::string stepping = adaptivity_.adaptive ? "adaptive, controller " + adaptivity_.controllerName : "fixed step";
-    return fmt::format("arkodeIMEX ({}, {}, relativeTolerance {:g}, absoluteTolerance {:g}; GMRES, maxKrylovDimension {}, "
-                       "jacobianTimesVector {}; viscosity implicit)",
-                       table_, stepping, adaptivity_.tolerances.relative, adaptivity_.tolerances.absolute, krylov_.maxKrylovDimension, jacobian);
+    return fmt::format(
+        "arkodeIMEX ({}, {}, relativeTolerance {:g}, absoluteTolerance {:g}; GMRES, maxKrylovDimension {}, "
+        "jacobianTimesVector {}; viscosity implicit)",
+        table_, stepping, adaptivity_.tolerances.relative, adaptivity_.tolerances.absolute, krylov_.maxKrylovDimension, jacobian);
 }
 
 template <int D>

@@ -6,7 +6,6 @@
 #include <arkode/arkode_erkstep.h>
 #include <fmt/format.h>
 
-
 namespace sph {
 
 template <int D>

@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
-
 namespace sph {
 
 template <int D>

@@ -32,7 +32,8 @@ double LeapfrogKickDriftKick<D>::takeStep(FluidSystem<D>& system, double t, doub
     auto timer = system.timers.time(Stage::Integrator);
     addScaled(v, halfStepVelocity_, halfDt, a, n);
     for (std::size_t s = 0; s < densitySets.size(); ++s)
-        addScaled(densitySets[s]->scalar("density"), halfStepDensity_[s], halfDt, densitySets[s]->scalar("densityRate"), densitySets[s]->ownedCount());
+        addScaled(densitySets[s]->scalar("density"), halfStepDensity_[s], halfDt, densitySets[s]->scalar("densityRate"),
+                  densitySets[s]->ownedCount());
     return dt;
 }
 

@@ -31,7 +31,8 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, doubl
         addScaled(v, start_.velocity, halfDt, a, n);
         if (!positionsFirst) addScaled(x, start_.position, halfDt, v, n);
         for (std::size_t s = 0; s < densitySets.size(); ++s)
-            addScaled(densitySets[s]->scalar("density"), start_.density[s], halfDt, densitySets[s]->scalar("densityRate"), densitySets[s]->ownedCount());
+            addScaled(densitySets[s]->scalar("density"), start_.density[s], halfDt, densitySets[s]->scalar("densityRate"),
+                      densitySets[s]->ownedCount());
     };
     {
         auto timer = system.timers.time(Stage::Integrator);
@@ -44,7 +45,8 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, doubl
         halfStep(false);
         extrapolate(x, start_.position, n);
         extrapolate(v, start_.velocity, n);
-        for (std::size_t s = 0; s < densitySets.size(); ++s) extrapolate(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->ownedCount());
+        for (std::size_t s = 0; s < densitySets.size(); ++s)
+            extrapolate(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->ownedCount());
     }
     this->evaluate(system, t + dt);
     return dt;

@@ -46,9 +46,11 @@ KrylovOptions readKrylovOptions(const Dictionary& dict) {
     KrylovOptions options;
     options.maxKrylovDimension = readMaxKrylovDimension(dict);
     const std::string jacobian = dict.getOrDefault<std::string>("jacobianTimesVector", "differenceQuotient");
-    if (jacobian == "velocityBlock") options.jacobian = JacobianTimesVector::VelocityBlock;
+    if (jacobian == "velocityBlock")
+        options.jacobian = JacobianTimesVector::VelocityBlock;
     else if (jacobian != "differenceQuotient")
-        dict.fail("jacobianTimesVector", "unknown Jacobian-vector product '" + jacobian + "'; valid names are:\n    differenceQuotient\n    velocityBlock");
+        dict.fail("jacobianTimesVector",
+                  "unknown Jacobian-vector product '" + jacobian + "'; valid names are:\n    differenceQuotient\n    velocityBlock");
     return options;
 }
 
@@ -135,8 +137,10 @@ int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vect
         const std::size_t n = system.fluid.ownedCount();
         const bool viscousOnly = terms == RateTerms::ViscousOnly;
         double* positionRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, 0);
-        if (viscousOnly) std::fill(positionRate, positionRate + n * D, 0.0);
-        else std::memcpy(positionRate, N_VGetSubvectorArrayPointer_ManyVector(y, 1), n * D * sizeof(double));
+        if (viscousOnly)
+            std::fill(positionRate, positionRate + n * D, 0.0);
+        else
+            std::memcpy(positionRate, N_VGetSubvectorArrayPointer_ManyVector(y, 1), n * D * sizeof(double));
         const auto& a = system.fluid.vector("acceleration");
         double* velocityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, 1);
         for (std::size_t i = 0; i < n; ++i) {
@@ -151,7 +155,8 @@ int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vect
             double* densityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, k++);
             for (std::size_t i = 0; i < set->ownedCount(); ++i) {
                 if (!std::isfinite(rate[i]))
-                    throw std::runtime_error(fmt::format("{} particle id {} has a non-finite density rate at time {:.9g}", set->name(), set->globalId[i], t));
+                    throw std::runtime_error(
+                        fmt::format("{} particle id {} has a non-finite density rate at time {:.9g}", set->name(), set->globalId[i], t));
                 densityRate[i] = viscousOnly ? 0.0 : rate[i];
             }
         }

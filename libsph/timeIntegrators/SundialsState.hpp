@@ -75,8 +75,7 @@ public:
 
     // The right-hand side f(t, y) -> ydot of the given terms; returns 0, or 1 (recoverable).
     // `evaluate` runs the system's evaluation (the integrator counts it).
-    int rates(FluidSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
-              const std::function<void(double, RateTerms)>& evaluate);
+    int rates(FluidSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms, const std::function<void(double, RateTerms)>& evaluate);
 
     // J w for the implicit viscous part with positions and densities frozen: the viscous
     // acceleration is linear in velocity (laminar viscosity), so J w = a_v(v + w) - a_v(v).

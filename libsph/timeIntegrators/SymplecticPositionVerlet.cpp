@@ -33,7 +33,8 @@ double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, d
         start_.save(system, densitySets);
         addScaled(x, x, halfDt, v, n);
         addScaled(v, v, halfDt, a, n);
-        for (ParticleSet<D>* set : densitySets) addScaled(set->scalar("density"), set->scalar("density"), halfDt, set->scalar("densityRate"), set->ownedCount());
+        for (ParticleSet<D>* set : densitySets)
+            addScaled(set->scalar("density"), set->scalar("density"), halfDt, set->scalar("densityRate"), set->ownedCount());
         system.predictBodies(halfDt);
     }
     this->evaluate(system, t + halfDt);
@@ -43,7 +44,8 @@ double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, d
 #pragma omp parallel for schedule(static)
         for (std::size_t i = 0; i < n; ++i) x[i] = start_.position[i] + halfDt * (start_.velocity[i] + v[i]);
         for (std::size_t s = 0; s < densitySets.size(); ++s)
-            correctDensity(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->scalar("densityRate"), dt, densitySets[s]->ownedCount());
+            correctDensity(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->scalar("densityRate"), dt,
+                           densitySets[s]->ownedCount());
         system.correctBodies(dt);
     }
     this->evaluate(system, t + dt);

@@ -36,7 +36,8 @@ void TimeIntegrator<D>::checkCompatible(const FluidSystem<D>& system, const Dict
     if (advancesFreeBodies()) return;
     for (const Patch<D>& patch : system.patches)
         if (patch.motion && patch.motion->isFree())
-            dict.fail("type", fmt::format("patch '{}' is a free body, which only the symplectic integrator advances; found {}", patch.name, describe()));
+            dict.fail("type",
+                      fmt::format("patch '{}' is a free body, which only the symplectic integrator advances; found {}", patch.name, describe()));
 }
 
 namespace {
@@ -54,10 +55,13 @@ template <int D>
 TimeIntegratorRegistry<D> makeTimeIntegratorRegistry() {
     using Pointer = std::unique_ptr<TimeIntegrator<D>>;
     TimeIntegratorRegistry<D> registry("time integrator");
-    registry.add("symplectic", {"symplectic position-Verlet predictor-corrector, 2 evaluations per step", "Dominguez et al., Comput. Phys. Commun. 262 (2021)", {}},
+    registry.add("symplectic",
+                 {"symplectic position-Verlet predictor-corrector, 2 evaluations per step", "Dominguez et al., Comput. Phys. Commun. 262 (2021)", {}},
                  [](const Dictionary&) -> Pointer { return std::make_unique<SymplecticPositionVerlet<D>>(); });
-    registry.add("verlet", {"Verlet with an Euler step every eulerEvery steps, 1 evaluation per step", "Monaghan, J. Comput. Phys. 110 (1994)",
-                            {{"eulerEvery", "40", "steps between Euler steps (DualSPHysics' VerletSteps)"}}},
+    registry.add("verlet",
+                 {"Verlet with an Euler step every eulerEvery steps, 1 evaluation per step",
+                  "Monaghan, J. Comput. Phys. 110 (1994)",
+                  {{"eulerEvery", "40", "steps between Euler steps (DualSPHysics' VerletSteps)"}}},
                  [](const Dictionary& dict) -> Pointer {
                      const int eulerEvery = dict.getOrDefault("eulerEvery", 40);
                      if (eulerEvery < 1) dict.fail("eulerEvery", fmt::format("must be at least 1, found {}", eulerEvery));
@@ -86,8 +90,9 @@ TimeIntegratorRegistry<D> makeTimeIntegratorRegistry() {
         {"maxKrylovDimension", "10", "GMRES subspace size"},
         {"jacobianTimesVector", "differenceQuotient", "differenceQuotient, or velocityBlock (analytic, laminar viscosity)"}};
     imexDocs.insert(imexDocs.end(), krylovDocs.begin(), krylovDocs.end());
-    registry.add("arkodeIMEX", {"SUNDIALS ARKODE ARKStep IMEX: viscosity implicit (Newton-GMRES), the rest explicit",
-                                "Kennedy & Carpenter, Appl. Numer. Math. 44 (2003); SUNDIALS 6.4", imexDocs},
+    registry.add("arkodeIMEX",
+                 {"SUNDIALS ARKODE ARKStep IMEX: viscosity implicit (Newton-GMRES), the rest explicit",
+                  "Kennedy & Carpenter, Appl. Numer. Math. 44 (2003); SUNDIALS 6.4", imexDocs},
                  [](const Dictionary& dict) -> Pointer {
                      const std::string table = chooseName(dict, "table", "ARK324L2SA", ArkodeArkStepImex<D>::tableNames());
                      auto adaptivity = readAdaptivity(dict, {"PID", "PI", "I", "explicitGustafsson", "implicitGustafsson", "imexGustafsson"});

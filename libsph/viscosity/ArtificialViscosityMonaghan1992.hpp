@@ -13,8 +13,7 @@ namespace sph {
 struct ArtificialViscosityMonaghan1992 {
     static constexpr bool enabled = true;
 
-    ArtificialViscosityMonaghan1992(double alpha, double beta, double h, double c0)
-        : alpha(alpha), beta(beta), h(h), c0(c0) {}
+    ArtificialViscosityMonaghan1992(double alpha, double beta, double h, double c0) : alpha(alpha), beta(beta), h(h), c0(c0) {}
 
     // The acceleration of i from j is m_j pairFactor r_ij (j receives -m_i pairFactor r_ij), from
     // v_ij.r_ij, 1/(r^2 + 0.01 h^2) and F = (dW/dr)/r. Receding pairs get mu = 0 without a branch

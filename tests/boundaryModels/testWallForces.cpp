@@ -50,8 +50,8 @@ ParticleSet<D> fluidSet(const std::vector<Vec<D>>& positions) {
 
 // Uniform pressure 1 (linear EOS with background pressure 1), cubic spline, no gravity unless given.
 template <int D>
-std::unique_ptr<FluidSystem<D>> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_ptr<BoundaryModel<D>> model, double h, const Vec<D>& lo,
-                      const Vec<D>& hi, const Vec<D>& gravity = Vec<D>::Zero()) {
+std::unique_ptr<FluidSystem<D>> system(ParticleSet<D> fluid, ParticleSet<D> walls, std::unique_ptr<BoundaryModel<D>> model, double h,
+                                       const Vec<D>& lo, const Vec<D>& hi, const Vec<D>& gravity = Vec<D>::Zero()) {
     std::vector<Patch<D>> patches(1);
     patches[0].name = "wall";
     patches[0].begin = 0;
@@ -80,7 +80,8 @@ std::unique_ptr<FluidSystem<2>> straightWall(const std::string& type) {
     for (int j = 0; j < 20; ++j)
         for (int i = 0; i < 200; ++i) fluid.push_back(Vec<2>((i + 0.5) * dx, (j + 0.5) * dx));
     for (int i = 0; i < 200; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
-    const auto dict = dictionary("type " + type + "; repulsion { type monaghanKajtar; K 1e-12; } calibration calibrated; sample { type nearest; size 2; }");
+    const auto dict =
+        dictionary("type " + type + "; repulsion { type monaghanKajtar; K 1e-12; } calibration calibrated; sample { type nearest; size 2; }");
     auto s = system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
                        std::make_unique<DeficiencyCorrection<2, Weighting>>(dict, contextFor(h), type), h, Vec<2>(-1, -1), Vec<2>(11, 2));
     s->evaluateRates(0.0);
@@ -94,8 +95,8 @@ TEST(MonaghanKajtar2009, HandComputedForceOnOneParticle) {
     const Vec<2> wall(0.0, 0.0), particle(0.01, 0.03);
     const double spacing = 0.025;  // beta = dx / s = 2
     auto owner = system<2>(fluidSet<2>({particle}), wallSet<2>({wall}, Vec<2>(0, 1), spacing),
-                       std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 3;"), contextFor(h))), h,
-                       Vec<2>(-1, -1), Vec<2>(1, 1));
+                           std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 3;"), contextFor(h))), h,
+                           Vec<2>(-1, -1), Vec<2>(1, 1));
     auto& s = *owner;
     s.evaluateRates(0.0);
     const CubicSplineMonaghanLattanzio1985<2> kernel(h);
@@ -127,11 +128,12 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
     std::vector<Vec<1>> positions;
     for (int k = 0; k < 40; ++k) positions.push_back(Vec<1>((k + 0.5) * dx));
     for (const char* calibration : {"calibrated", "literal"}) {
-        const auto dict = dictionary(std::string("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 1; } calibration ") +
-                                     calibration + ";");
+        const auto dict = dictionary(
+            std::string("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } sample { type nearest; size 1; } calibration ") +
+            calibration + ";");
         auto owner = system<1>(fluidSet<1>(positions), wallSet<1>({Vec<1>(0.0)}, Vec<1>(1.0), dx),
-                           std::make_unique<DeficiencyCorrection<1, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
-                           Vec<1>(-1.0), Vec<1>(3.0));
+                               std::make_unique<DeficiencyCorrection<1, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"),
+                               h, Vec<1>(-1.0), Vec<1>(3.0));
         auto& s = *owner;
         s.evaluateRates(0.0);
         const auto& before = s.fluid.vector("uncorrectedAcceleration");
@@ -147,7 +149,8 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
         // the wall, support 4 dx) has no deficiency but still receives a small correction: the
         // correction reaches r_inf from the wall, the deficiency only r_inf - dx/2.
         EXPECT_LT(std::abs(before[3].x()), 1e-15);
-        for (std::size_t k = 1; k < 3; ++k) EXPECT_LT(std::abs(before[k].x() + correction[k].x()), std::abs(before[k].x())) << calibration << " " << k;
+        for (std::size_t k = 1; k < 3; ++k)
+            EXPECT_LT(std::abs(before[k].x() + correction[k].x()), std::abs(before[k].x())) << calibration << " " << k;
     }
 }
 
@@ -175,24 +178,27 @@ TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) 
 }
 
 TEST(DeficiencyCorrection, TheDefaultPartnerIsTheWallDistancePenaltyAndAnUnknownOneIsAnError) {
-    const DeficiencyCorrection<2, DeficiencyWeightingJones2010> model(dictionary("type deficiencyCorrection;"), contextFor(0.065), "deficiencyCorrection");
+    const DeficiencyCorrection<2, DeficiencyWeightingJones2010> model(dictionary("type deficiencyCorrection;"), contextFor(0.065),
+                                                                      "deficiencyCorrection");
     // A damper (zeta 1) and no spring, acting within dx/2.
     EXPECT_NE(model.describe().find("calibration wallPressure, direction normal, repulsion wallDistance: K 0, damping 1, distance 0.025"),
               std::string::npos)
         << model.describe();
     try {
-        DeficiencyCorrection<2, DeficiencyWeightingJones2010>(dictionary("type deficiencyCorrection; repulsion { type hardWall; }"), contextFor(0.065),
-                                                              "deficiencyCorrection");
+        DeficiencyCorrection<2, DeficiencyWeightingJones2010>(dictionary("type deficiencyCorrection; repulsion { type hardWall; }"),
+                                                              contextFor(0.065), "deficiencyCorrection");
         FAIL() << "accepted an unknown partner";
     } catch (const FatalError& e) {
-        EXPECT_STREQ(e.what(), "boundaryProperties:1:45: error: unknown repulsion 'hardWall'; valid repulsion names are:\n    lennardJones\n    "
-                               "monaghanKajtar\n    wallDistance");
+        EXPECT_STREQ(e.what(),
+                     "boundaryProperties:1:45: error: unknown repulsion 'hardWall'; valid repulsion names are:\n    lennardJones\n    "
+                     "monaghanKajtar\n    wallDistance");
     }
     try {
         readRepulsionLaw(dictionary("type hardWall;"), contextFor(0.065));
         FAIL();
     } catch (const FatalError& e) {
-        EXPECT_STREQ(e.what(), "boundaryProperties:1:6: error: unknown repulsion 'hardWall'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar");
+        EXPECT_STREQ(e.what(),
+                     "boundaryProperties:1:6: error: unknown repulsion 'hardWall'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar");
     }
     // The sample and the smoothing belong to the paper's calibration; wallPressure has neither.
     for (const char* keyword : {"sample { type nearest; size 2; }", "temporalSmoothing 0.1;"}) {
@@ -216,10 +222,11 @@ TEST(DeficiencyCorrection, WorksIn3DOnAParticleSurfaceWithNormals) {
             for (int i = 0; i < 30; ++i) fluid.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx));
     for (int j = 0; j < 30; ++j)
         for (int i = 0; i < 30; ++i) walls.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, 0.0));
-    const auto dict = dictionary("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } calibration calibrated; sample { type nearest; size 1; }");
+    const auto dict =
+        dictionary("type deficiencyCorrection; repulsion { type monaghanKajtar; K 1e-12; } calibration calibrated; sample { type nearest; size 1; }");
     auto owner = system<3>(fluidSet<3>(fluid), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
-                       std::make_unique<DeficiencyCorrection<3, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
-                       Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
+                           std::make_unique<DeficiencyCorrection<3, DeficiencyWeightingJones2010>>(dict, contextFor(h), "deficiencyCorrection"), h,
+                           Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
     auto& s = *owner;
     s.evaluateRates(0.0);
     const std::size_t middle = 15 * 30 + 15;  // first layer, centre of the floor
@@ -243,7 +250,8 @@ TEST(DeficiencyWeighting, HandComputedWeights) {
     // The boundary-integral weight is the particle's area, whatever its spacing.
     EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.25, 1.0), 0.25);
     EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<3>(0.5, Vec<3>(0, 0, 1), Vec<3>(0, 0, 1), 0.25, 0.0625, 1.0), 0.0625);
-    EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.25 / std::sqrt(2.0), 1.0), 0.25 / std::sqrt(2.0));
+    EXPECT_DOUBLE_EQ(DeficiencyWeightingBoundaryIntegral::weight<2>(0.5, Vec<2>(0, 1), Vec<2>(0, 1), 0.25, 0.25 / std::sqrt(2.0), 1.0),
+                     0.25 / std::sqrt(2.0));
 }
 
 TEST(DeficiencyCorrection, WallPressureEmulatesVirtualParticlesAtUniformPressure) {
@@ -297,8 +305,8 @@ TEST(DeficiencyCorrection, WallPressureHoldsAHydrostaticColumnBesideASideWall) {
         for (std::size_t i = 0; i < fluid.size(); ++i) fluid.scalar("density")[i] = rho0 + rho0 * g * (H - fluid.position[i].y()) / (10.0 * 10.0);
         const auto dict = dictionary(std::string("type deficiencyCorrectionBoundaryIntegral; calibration ") + calibration + ";");
         auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(1, 0), dx),
-                                      std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(dict, contextFor(h), "c"), h,
-                                      Vec<2>(-1, -1), Vec<2>(3, 3), Vec<2>(0, -g));
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(dict, contextFor(h), "c"), h,
+                           Vec<2>(-1, -1), Vec<2>(3, 3), Vec<2>(0, -g));
         s->evaluateRates(0.0);
         const auto& a = s->fluid.vector("acceleration");
         double worst = 0.0;
@@ -355,10 +363,11 @@ TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstR
     // The damper alone, on a particle closing on the wall at 0.2: gap^2 zeta (c0/d0) 0.2, c0 = 10.
     auto fluid = fluidSet<2>({Vec<2>(1.0, 0.25 * dx)});
     fluid.vector("velocity")[0] = Vec<2>(0.3, -0.2);
-    auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
-                       std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
-                           dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 0; damping 2; }"), contextFor(h), "c"),
-                       h, Vec<2>(-1, -1), Vec<2>(3, 1));
+    auto s =
+        system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                  std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                      dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 0; damping 2; }"), contextFor(h), "c"),
+                  h, Vec<2>(-1, -1), Vec<2>(3, 1));
     s->evaluateRates(0.0);
     const Vec<2> damper = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
     EXPECT_NEAR(damper.y(), 0.25 * 2.0 * 10.0 / (0.5 * dx) * 0.2, 1e-12 * 160.0);
@@ -375,8 +384,10 @@ TEST(DeficiencyCorrection, NearestSampleTakesEveryTieSoALatticeWallGetsOneCoeffi
         auto system = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
         const auto& C = system->walls.scalar("correctionCoefficient");
         for (std::size_t j = 50; j < 150; ++j) EXPECT_NEAR(C[j], C[100], 1e-12 * std::abs(C[100])) << j;
-        if (first.empty()) first = C;
-        else EXPECT_EQ(C, first) << threads << " threads";
+        if (first.empty())
+            first = C;
+        else
+            EXPECT_EQ(C, first) << threads << " threads";
     }
 }
 
@@ -407,8 +418,9 @@ TEST(WallPenetrations, CountsFluidBehindTheNearestFirstLayerParticle) {
     const double h = 1.3 * dx;
     std::vector<Vec<2>> walls;
     for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
-    auto s = system<2>(fluidSet<2>({Vec<2>(0.5, 0.01), Vec<2>(0.5, -0.01), Vec<2>(0.99, -0.02), Vec<2>(0.5, -0.5)}), wallSet<2>(walls, Vec<2>(0, 1), dx),
-                       std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
-                       Vec<2>(-1, -1), Vec<2>(2, 1));
+    auto s =
+        system<2>(fluidSet<2>({Vec<2>(0.5, 0.01), Vec<2>(0.5, -0.01), Vec<2>(0.99, -0.02), Vec<2>(0.5, -0.5)}), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                  std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h, Vec<2>(-1, -1),
+                  Vec<2>(2, 1));
     EXPECT_EQ(WallPenetrations<2>::count(*s), 2u);
 }

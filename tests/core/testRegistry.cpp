@@ -96,7 +96,8 @@ TEST(ModelCatalogue, ListsOneFamilyByNameAndNamesTheValidOnes) {
         sph::modelCatalogue("kernels");
         ADD_FAILURE() << "no error for an unknown family";
     } catch (const std::invalid_argument& e) {
-        EXPECT_EQ(std::string(e.what()), "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion particleShifting "
-                                         "equationOfState boundary motion integrator functionObject analytic fluidRegion wallPatch");
+        EXPECT_EQ(std::string(e.what()),
+                  "unknown model family 'kernels'; valid: kernel density viscosity densityDiffusion particleShifting "
+                  "equationOfState boundary motion integrator functionObject analytic fluidRegion wallPatch");
     }
 }

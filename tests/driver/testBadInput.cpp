@@ -63,30 +63,34 @@ TEST(BadInput, UnknownModelListsTheValidNames) {
 TEST(BadInput, UnknownBoundaryModel) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "constant/boundaryProperties", "dummyParticles", "ghostParticles");
-    expectContains(failureOf(dir), "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    deficiencyCorrection\n"
-                                   "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    monaghanKajtar");
+    expectContains(failureOf(dir),
+                   "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    deficiencyCorrection\n"
+                   "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    monaghanKajtar");
 }
 
 TEST(BadInput, CorrectionWithAnUnknownPartner) {
     const auto dir = copyCase("rectangularTank2D");
     writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; repulsion { type springs; } }\n");
-    expectContains(failureOf(dir), "error: unknown repulsion 'springs'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar\n    wallDistance");
+    expectContains(failureOf(dir),
+                   "error: unknown repulsion 'springs'; valid repulsion names are:\n    lennardJones\n    monaghanKajtar\n    wallDistance");
 }
 
 TEST(BadInput, WallForceModelOnLayersOfWallParticles) {
     // Dummy particles' four layers under a wall-force model: each layer would push the fluid.
     const auto dir = copyCase("hydrostaticTank2D");
     writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrection; }\n");
-    expectContains(failureOf(dir), "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'deficiencyCorrection' acts from one layer of wall "
-                                   "particles on the wall surface, but patch 'tank' has 4 layers; generate it with layers 1; firstLayerOffset 0;");
+    expectContains(failureOf(dir),
+                   "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'deficiencyCorrection' acts from one layer of wall "
+                   "particles on the wall surface, but patch 'tank' has 4 layers; generate it with layers 1; firstLayerOffset 0;");
 }
 
 TEST(BadInput, DummyParticlesOnTooFewLayers) {
     // The quintic spline's support 3.6 dx needs 4 layers behind the wall.
     const auto dir = copyCase("hydrostaticTank2D");
     replaceInFile(dir / "system/generateParticlesDict", "layers 4;", "layers 1;");
-    expectContains(failureOf(dir), "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'dummyParticles' needs at least 4 layers of wall "
-                                   "particles to fill the kernel support (0.072 = 3.6 dx) behind the wall, but patch 'tank' has 1;");
+    expectContains(failureOf(dir),
+                   "error: keyword 'type' in dictionary 'boundaryProperties/tank': 'dummyParticles' needs at least 4 layers of wall "
+                   "particles to fill the kernel support (0.072 = 3.6 dx) behind the wall, but patch 'tank' has 1;");
 }
 
 TEST(BadInput, PatchWithoutAModel) {
@@ -119,14 +123,16 @@ TEST(BadInput, FreeBodyNeedsAWallForceModel) {
     const auto dir = copyCase("sinkingCylinder2D");
     replaceInFile(dir / "system/generateParticlesDict", "layers 1; firstLayerOffset 0;", "layers 3;");  // a layout dummy particles accept
     writeFile(dir / "constant/boundaryProperties",
-              "tank { type dummyParticles; }\ncylinder { type dummyParticles; motion { type freeBody; mass 1; momentOfInertia 1; centreOfMass (0.5 0.3); } }\n");
+              "tank { type dummyParticles; }\ncylinder { type dummyParticles; motion { type freeBody; mass 1; momentOfInertia 1; centreOfMass (0.5 "
+              "0.3); } }\n");
     expectContains(failureOf(dir), "a free body takes its loads from a wall-force model");
 }
 
 TEST(BadInput, UnknownPeriodicDirection) {
     const auto dir = copyCase("poiseuille2D");
     replaceInFile(dir / "system/generateParticlesDict", "periodic (x);", "periodic (z);");
-    expectContains(failureOf(dir), "error: keyword 'periodic' in dictionary 'generateParticlesDict/domain': unknown direction 'z'; valid directions are: x y");
+    expectContains(failureOf(dir),
+                   "error: keyword 'periodic' in dictionary 'generateParticlesDict/domain': unknown direction 'z'; valid directions are: x y");
 }
 
 TEST(BadInput, NegativeOrZeroSpacing) {
@@ -140,8 +146,9 @@ TEST(BadInput, NegativeOrZeroSpacing) {
 TEST(BadInput, SmoothingLengthSmallerThanSpacing) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/sphSchemes", "hdx 1.3;", "hdx 0.8;");
-    expectContains(failureOf(dir), "error: keyword 'hdx' in dictionary 'sphSchemes/kernel': h = hdx dx must not be smaller than the particle spacing; "
-                                   "found hdx 0.8 (valid: >= 1)");
+    expectContains(failureOf(dir),
+                   "error: keyword 'hdx' in dictionary 'sphSchemes/kernel': h = hdx dx must not be smaller than the particle spacing; "
+                   "found hdx 0.8 (valid: >= 1)");
 }
 
 TEST(BadInput, FluidOutsideTheDomain) {
@@ -178,8 +185,8 @@ TEST(BadInput, NonFiniteOrNonPositiveStateValues) {
     auto fluid = original;
     fluid.scalar("density")[7] = std::numeric_limits<double>::quiet_NaN();
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
-    expectContains(failureOf(dir, false), "error: particle file '" + (dir / "0/fluid.vtu").string() +
-                                              "': particle id " + std::to_string(fluid.globalId[7]) + " has a non-finite density (a corrupt state file?)");
+    expectContains(failureOf(dir, false), "error: particle file '" + (dir / "0/fluid.vtu").string() + "': particle id " +
+                                              std::to_string(fluid.globalId[7]) + " has a non-finite density (a corrupt state file?)");
     fluid = original;
     fluid.scalar("mass")[3] = -1.0;
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
@@ -288,15 +295,17 @@ TEST(BadInput, DiffusionWithSummationDensity) {
 TEST(BadInput, SpeedOfSoundMissing) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "constant/fluidProperties", "c0FromHeight", "c0Height");
-    expectContains(failureOf(dir), "error: dictionary 'fluidProperties/equationOfState' needs the speed of sound: 'c0 <value>;' or "
-                                   "'c0FromHeight { coefficient 10; height <H>; }'");
+    expectContains(failureOf(dir),
+                   "error: dictionary 'fluidProperties/equationOfState' needs the speed of sound: 'c0 <value>;' or "
+                   "'c0FromHeight { coefficient 10; height <H>; }'");
 }
 
 TEST(BadInput, BoxUnderHalfASpacing) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/generateParticlesDict", "max (0.40005 0.17145)", "max (0.0005 0.17145)");
-    expectContains(failureOf(dir), "error: keyword 'max' in dictionary 'generateParticlesDict/boundaries/tank': the extent 0.0005 (from 0 to 0.0005) must be "
-                                   "at least half a spacing dx = 0.00142875");
+    expectContains(failureOf(dir),
+                   "error: keyword 'max' in dictionary 'generateParticlesDict/boundaries/tank': the extent 0.0005 (from 0 to 0.0005) must be "
+                   "at least half a spacing dx = 0.00142875");
 }
 
 TEST(BadInput, ExistingInitialStateIsNotOverwrittenByDefault) {
@@ -345,8 +354,9 @@ TEST(BadInput, EulerEveryMustBePositive) {
 TEST(BadInput, AnalyticInitialPressureNeedsASolutionWithPressure) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/generateParticlesDict", "initialPressure hydrostatic;", "initialPressure analytic;");
-    expectContains(failureOf(dir), "keyword 'initialPressure' in dictionary 'generateParticlesDict': 'analytic' needs fluid region 'column' to take "
-                                   "its velocity from a solution with a pressure field");
+    expectContains(failureOf(dir),
+                   "keyword 'initialPressure' in dictionary 'generateParticlesDict': 'analytic' needs fluid region 'column' to take "
+                   "its velocity from a solution with a pressure field");
     const auto couette = copyCase("couette2D", "couette");
     replaceInFile(couette / "system/generateParticlesDict", "water   { type box; min (0 0); max (5e-4 1e-3); }",
                   "water   { type box; min (0 0); max (5e-4 1e-3); velocity { type couette; V0 1; L 1e-3; nu 1e-6; } }");
@@ -359,14 +369,16 @@ TEST(BadInput, UnknownAnalyticSolutionListsTheValidNames) {
     replaceInFile(dir / "system/controlDict", "solution        { type taylorGreen;", "solution        { type taylorGren;");
     const std::string message = failureOf(dir);
     expectContains(message, (dir / "system/controlDict").string() + ":");
-    expectContains(message, "unknown analytic solution 'taylorGren'; valid analytic solution names are:\n    couette\n    ellipticalDrop\n    hydrostatic");
+    expectContains(message,
+                   "unknown analytic solution 'taylorGren'; valid analytic solution names are:\n    couette\n    ellipticalDrop\n    hydrostatic");
 }
 
 TEST(BadInput, ProbeOutsideTheDomainStopsBeforeTheFirstStep) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/controlDict", "functions\n{", "functions\n{\n    p { type probes; fields (p); points ((0.1 0.01) (0.5 0.01)); }");
-    expectContains(failureOf(dir), "keyword 'points' in dictionary 'controlDict/functions/p': probe 1 at (0.5 0.01) lies outside the domain "
-                                   "[(-0.03 -0.03), (0.43 0.2)]");
+    expectContains(failureOf(dir),
+                   "keyword 'points' in dictionary 'controlDict/functions/p': probe 1 at (0.5 0.01) lies outside the domain "
+                   "[(-0.03 -0.03), (0.43 0.2)]");
     EXPECT_FALSE(std::filesystem::exists(dir / "0.01")) << "a step was taken";
 }
 
@@ -382,8 +394,9 @@ TEST(BadInput, RunawaySizesAreRefusedBeforeAllocation) {
     // 1e8 layers and 2e9 sample points ran until the memory ran out.
     auto dir = copyCase("damBreak2D", "tiny");
     setEntry(dir / "system/generateParticlesDict", "spacing", "1e-10");
-    expectContains(failureOf(dir), "keyword 'spacing' in dictionary 'generateParticlesDict': the domain is 4.6e+09 spacings of 1e-10 across in direction 0 "
-                                   "(at most 2147483647): is the spacing a slip?");
+    expectContains(failureOf(dir),
+                   "keyword 'spacing' in dictionary 'generateParticlesDict': the domain is 4.6e+09 spacings of 1e-10 across in direction 0 "
+                   "(at most 2147483647): is the spacing a slip?");
     dir = copyCase("damBreak2D", "small");
     setEntry(dir / "system/generateParticlesDict", "spacing", "2e-6");
     const std::string memory = failureOf(dir);
@@ -407,7 +420,8 @@ TEST(BadInput, CourantNumberAboveOne) {
 TEST(BadInput, WallPatchListedTwice) {
     // Twice the wall particles on c09449c, each pair at one place.
     const auto dir = copyCase("damBreak2D");
-    replaceInFile(dir / "system/generateParticlesDict", "open (yMax); }", "open (yMax); }\n    again { type boxWalls; min (0 0); max (0.40005 0.17145); layers 3; open (yMax); }");
+    replaceInFile(dir / "system/generateParticlesDict", "open (yMax); }",
+                  "open (yMax); }\n    again { type boxWalls; min (0 0); max (0.40005 0.17145); layers 3; open (yMax); }");
     expectContains(failureOf(dir), "wall patch 'again' lays 1578 of its 1578 particles on those of patch 'tank' (the same patch listed twice?)");
 }
 
@@ -428,8 +442,9 @@ TEST(BadInput, LaterTimesAreNotOverwrittenWithoutAFlag) {
     sph::runCase(dir);
     ASSERT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));
     std::ofstream(dir / "system/controlDict", std::ios::app) << "startFrom startTime;\nstartTime 0.01;\n";
-    expectContains(failureOf(dir, false), "the run starts at t = 0.01, but the case has later times (written by an earlier run): 0.02; the run would "
-                                          "overwrite them. Start from latestTime, remove them, or run wcsph -overwrite to have them removed");
+    expectContains(failureOf(dir, false),
+                   "the run starts at t = 0.01, but the case has later times (written by an earlier run): 0.02; the run would "
+                   "overwrite them. Start from latestTime, remove them, or run wcsph -overwrite to have them removed");
     EXPECT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));
     sph::runCase(dir, sph::RunMode::TimeLoop, true);
     EXPECT_TRUE(std::filesystem::exists(dir / "0.02/fluid.vtu"));  // written again by this run

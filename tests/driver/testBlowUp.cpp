@@ -99,8 +99,9 @@ TEST(BlowUp, CheckNamesTheFirstFaultyParticleAndItsFault) {
     velocity[700] = sph::Vec<2>(11.0, 0.0);
     density[600] = 499.0;
     fluid.position[500] = sph::Vec<2>(0.5, 1.01);
-    EXPECT_EQ(report(), "error: the run blew up at step 12, time 0.25: fluid particle id 5500 at (0.5 1.01) left the domain [(0 0), (1 1)].\n"
-                        "    The last written time is kept; reduce the time step (courant) or check the case.");
+    EXPECT_EQ(report(),
+              "error: the run blew up at step 12, time 0.25: fluid particle id 5500 at (0.5 1.01) left the domain [(0 0), (1 1)].\n"
+              "    The last written time is kept; reduce the time step (courant) or check the case.");
     fluid.position[500] = sph::Vec<2>(0.5, 0.5);
     EXPECT_NE(report().find("particle id 5600 at (0.6 0.5) has density 499, outside [0.5, 2] rho0 = [500, 2000]"), std::string::npos);
     density[600] = std::nan("");

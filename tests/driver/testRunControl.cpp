@@ -115,7 +115,8 @@ TEST(RunControl, DiskFullStopsWithAClearErrorAndKeepsWhatWasWritten) {
     EXPECT_EQ(WEXITSTATUS(status), 1) << log;
     EXPECT_NE(log.find("error: cannot write particle file"), std::string::npos) << log;
     EXPECT_NE(log.find("while writing '" + (dir / "0.01").string() + "'"), std::string::npos) << log;
-    std::vector<std::string> expected{"0", "constant", dir.filename().string() + ".pvd", "log", "martinMoyce1952Front.csv", "postProcessing", "system"};
+    std::vector<std::string> expected{"0",     "constant", dir.filename().string() + ".pvd", "log", "martinMoyce1952Front.csv", "postProcessing",
+                                      "system"};
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(entries(dir), expected);
     EXPECT_EQ(readText(dir / (dir.filename().string() + ".pvd")).find("0.01"), std::string::npos);
@@ -158,7 +159,8 @@ TEST(RunControl, UnreadableDictionaryIsAClearError) {
     const auto dir = damBreak("0.02");
     std::filesystem::permissions(dir / "system/sphSchemes", std::filesystem::perms::none);
     const std::string log = failureAsNobody(dir);
-    EXPECT_NE(log.find("error: cannot open dictionary '" + (dir / "system/sphSchemes").string() + "': permission denied or unreadable"), std::string::npos)
+    EXPECT_NE(log.find("error: cannot open dictionary '" + (dir / "system/sphSchemes").string() + "': permission denied or unreadable"),
+              std::string::npos)
         << log;
 }
 
@@ -203,7 +205,7 @@ TEST(RunControl, OnlyTheTemporariesOfEndedRunsAreRemoved) {
     EXPECT_FALSE(std::filesystem::exists(dir / (".0.005.tmp" + gone)));  // a killed run's time directory
     EXPECT_FALSE(std::filesystem::exists(dir / (".fluid.pvd.tmp" + gone)));
     EXPECT_TRUE(std::filesystem::exists(dir / (".notes.tmp" + gone)));  // not a name sphkit writes
-    EXPECT_TRUE(std::filesystem::exists(dir / ".0.005.tmp1"));           // process 1 still runs
+    EXPECT_TRUE(std::filesystem::exists(dir / ".0.005.tmp1"));          // process 1 still runs
 }
 
 TEST(RunControl, ACaseNameOf250Characters) {

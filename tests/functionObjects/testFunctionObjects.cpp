@@ -92,8 +92,8 @@ std::unique_ptr<FluidSystem<2>> makeBlockOnAFloor(std::unique_ptr<BoundaryModel<
     patches[0].motion = std::move(motion);
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), LinearEquationOfState(1000.0, 10.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
-    auto system = std::make_unique<FluidSystem<2>>(std::move(models), blockFluid(), std::move(walls), std::move(patches),
-                                                   Vec<2>(-0.1, -0.1), Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
+    auto system = std::make_unique<FluidSystem<2>>(std::move(models), blockFluid(), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1),
+                                                   Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
     system->evaluateRates(0.0);
     auto& p = system->fluid.scalar("pressure");
     for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 1000.0 * 9.81 * (1.0 - system->fluid.position[i].y());
@@ -214,7 +214,7 @@ TEST(ReferenceSeries, RowsThatStepBackAreSortedWithANote) {
     EXPECT_NE(note.find("ref.csv: 1 row steps back in time (line 4); the reference is sorted by time"), std::string::npos) << note;
     EXPECT_DOUBLE_EQ(reference.at(0.15)->front(), 1.5);  // between 0.1 and 0.2, as sorted
     EXPECT_DOUBLE_EQ(reference.at(0.05)->front(), 0.5);
-    EXPECT_DOUBLE_EQ(reference.at(0.3)->front(), 3.0);  // the step: the first row of 0.3 from below ...
+    EXPECT_DOUBLE_EQ(reference.at(0.3)->front(), 3.0);   // the step: the first row of 0.3 from below ...
     EXPECT_DOUBLE_EQ(reference.at(0.35)->front(), 5.0);  // ... the last above
     EXPECT_FALSE(reference.at(0.41));
 }
@@ -364,9 +364,9 @@ TEST(WallPressureSensors, AverageTheModelsWallPressureOverTheirFootprintByArea) 
         return WallPressureSensors<2>(Dictionary::fromString("type wallPressure; patch floor; " + entries, "sensors"), contextFor(dir, *system))
             .pressures(*system, 0.0);
     };
-    EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], 50.0, 1e-9);  // 0.44 ... 0.56, symmetric
+    EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], 50.0, 1e-9);    // 0.44 ... 0.56, symmetric
     EXPECT_NEAR(read("points ((0.51 0)); size 0.001;")[0], 52.0, 1e-9);  // smaller than the spacing: the nearest particle
-    system->walls.scalar("area")[13] = 3.0 * dx;  // the particle at x = 0.44 stands for three spacings
+    system->walls.scalar("area")[13] = 3.0 * dx;                         // the particle at x = 0.44 stands for three spacings
     EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], (3.0 * 44.0 + 48.0 + 52.0 + 56.0) / 6.0, 1e-9);
 }
 

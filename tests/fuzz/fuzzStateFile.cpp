@@ -18,8 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (int dimension = 2; dimension <= 3; ++dimension) {
         try {
             sph::StateHeader header;
-            if (dimension == 2) (void)sph::readParticleFile<2>(file, "fluid", header);
-            else (void)sph::readParticleFile<3>(file, "fluid", header);
+            if (dimension == 2)
+                (void)sph::readParticleFile<2>(file, "fluid", header);
+            else
+                (void)sph::readParticleFile<3>(file, "fluid", header);
         } catch (const sph::FatalError&) {
         }
     }

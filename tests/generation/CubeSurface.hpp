@@ -15,11 +15,11 @@ inline std::filesystem::path writeCubeObj(const std::string& name, bool leaveOut
     out << "# unit cube\n";
     for (int k = 0; k < 8; ++k) out << "v " << (k & 1) << ' ' << ((k >> 1) & 1) << ' ' << ((k >> 2) & 1) << '\n';
     // Vertex k is (k & 1, k >> 1 & 1, k >> 2 & 1), 1-based in OBJ.
-    out << "f 2 4 3 1\n"   // z = 0
-           "f 5 6 2 1\n"   // y = 0
-           "f 3 7 5 1\n"   // x = 0
-           "f 6 8 4 2\n"   // x = 1
-           "f 4 8 7 3\n";  // y = 1
+    out << "f 2 4 3 1\n"                  // z = 0
+           "f 5 6 2 1\n"                  // y = 0
+           "f 3 7 5 1\n"                  // x = 0
+           "f 6 8 4 2\n"                  // x = 1
+           "f 4 8 7 3\n";                 // y = 1
     if (!leaveOut) out << "f 7 8 6 5\n";  // z = 1
     return file;
 }

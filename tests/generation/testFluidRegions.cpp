@@ -91,17 +91,22 @@ TEST(FluidRegions, SurfaceIn2DIsAClosedCurveOrASurfacesCrossSection) {
     const GenerationDomain<2> domain{Vec<2>::Constant(-0.5), Vec<2>::Constant(1.5), ""};
     const std::vector<Vec<2>> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     const std::filesystem::path curve = writeCurveObj("square.obj", square);
-    EXPECT_EQ(fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\";", curve.string()), "water"), 0.1, domain).positions.size(), 100u);
+    EXPECT_EQ(
+        fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\";", curve.string()), "water"), 0.1, domain).positions.size(),
+        100u);
     const std::filesystem::path cube = writeCubeObj("slicedCube.obj");
-    const auto sliced = fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; slice 0.5;", cube.string()), "water"), 0.1, domain);
+    const auto sliced =
+        fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; slice 0.5;", cube.string()), "water"), 0.1, domain);
     ASSERT_EQ(sliced.positions.size(), 100u);
     for (const Vec<2>& x : sliced.positions) EXPECT_TRUE(x.minCoeff() > 0.0 && x.maxCoeff() < 1.0) << x.transpose();
     // Two nested loops: the ring between them (even-odd), 10^2 - 4^2 with the inner square 0.3 ... 0.7.
     std::ofstream(curve.parent_path() / "ring.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.3 0.3 0\nv 0.7 0.3 0\nv 0.7 0.7 0\nv 0.3 0.7 0\n"
-                                                      "l 1 2 3 4 1\nl 5 6 7 8 5\n";
-    EXPECT_EQ(fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\";", (curve.parent_path() / "ring.obj").string()), "water"), 0.1, domain)
-                  .positions.size(),
-              84u);
+                                                       "l 1 2 3 4 1\nl 5 6 7 8 5\n";
+    EXPECT_EQ(
+        fillFluidRegion<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\";", (curve.parent_path() / "ring.obj").string()), "water"),
+                           0.1, domain)
+            .positions.size(),
+        84u);
     const auto failure = [&](const std::string& text) {
         try {
             fillFluidRegion<2>(Dictionary::fromString(text, "water"), 0.1, domain);
@@ -113,8 +118,10 @@ TEST(FluidRegions, SurfaceIn2DIsAClosedCurveOrASurfacesCrossSection) {
     const std::filesystem::path open = writeCurveObj("openSquare.obj", square, true);
     EXPECT_NE(failure(fmt::format("type surface; file \"{}\";", open.string())).find("1 of its 1 curves do not close"), std::string::npos)
         << failure(fmt::format("type surface; file \"{}\";", open.string()));
-    EXPECT_NE(failure(fmt::format("type surface; file \"{}\"; slice 2;", cube.string())).find("its surface does not cross the plane z = 2"), std::string::npos);
-    EXPECT_NE(failure("type surface; file \"tank.dxf\";").find("unknown extension '.dxf'; valid: .obj (polylines, or a surface to slice), .stl"), std::string::npos);
+    EXPECT_NE(failure(fmt::format("type surface; file \"{}\"; slice 2;", cube.string())).find("its surface does not cross the plane z = 2"),
+              std::string::npos);
+    EXPECT_NE(failure("type surface; file \"tank.dxf\";").find("unknown extension '.dxf'; valid: .obj (polylines, or a surface to slice), .stl"),
+              std::string::npos);
 }
 
 TEST(FluidRegions, FluidInFrontOfAOneLayerWallIsMovedOutToHalfASpacingNotDropped) {

@@ -197,7 +197,8 @@ TEST(WallPatches, LayeredPolylineFillsTheBlockBehindATanksCorner) {
     EXPECT_NEAR(closestPair(walls), dx, 1e-12);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) EXPECT_EQ(countAt(walls, dx, -1 - i, -1 - j, std::max(i, j)), 1) << i << " " << j;
-    const auto diagonal = std::find_if(walls.positions.begin(), walls.positions.end(), [&](const Vec<2>& x) { return (x - Vec<2>(-0.25, -0.25)).norm() < 1e-12; });
+    const auto diagonal =
+        std::find_if(walls.positions.begin(), walls.positions.end(), [&](const Vec<2>& x) { return (x - Vec<2>(-0.25, -0.25)).norm() < 1e-12; });
     ASSERT_NE(diagonal, walls.positions.end());
     EXPECT_LT((walls.normals[static_cast<std::size_t>(diagonal - walls.positions.begin())] - Vec<2>(1, 1).normalized()).norm(), 1e-12);
 }
@@ -219,12 +220,15 @@ TEST(WallPatches, LayeredPolylineTankIsTheBoxWallsTank) {
     // (832; before, 800: its still water lost 26 particles through the corners by t = 2 and its
     // hydrostatic pressure error was 8.7 % against boxWalls' 0.73 %).
     const double dx = 0.02;
-    const WallPatchParticles<2> path = generateWithItsLayers<2>(Dictionary::fromString("type polyline; points ((0 1) (0 0) (2 0) (2 1)); layers 4;", "tank"), dx, anywhere<2>);
-    const WallPatchParticles<2> box = generateWithItsLayers<2>(Dictionary::fromString("type boxWalls; min (0 0); max (2 1); layers 4; open (yMax);", "tank"), dx, anywhere<2>);
+    const WallPatchParticles<2> path =
+        generateWithItsLayers<2>(Dictionary::fromString("type polyline; points ((0 1) (0 0) (2 0) (2 1)); layers 4;", "tank"), dx, anywhere<2>);
+    const WallPatchParticles<2> box =
+        generateWithItsLayers<2>(Dictionary::fromString("type boxWalls; min (0 0); max (2 1); layers 4; open (yMax);", "tank"), dx, anywhere<2>);
     ASSERT_EQ(path.positions.size(), 832u);
     ASSERT_EQ(box.positions.size(), 832u);
     for (std::size_t k = 0; k < path.positions.size(); ++k) {
-        const auto same = std::find_if(box.positions.begin(), box.positions.end(), [&](const Vec<2>& x) { return (x - path.positions[k]).norm() < 1e-12; });
+        const auto same =
+            std::find_if(box.positions.begin(), box.positions.end(), [&](const Vec<2>& x) { return (x - path.positions[k]).norm() < 1e-12; });
         ASSERT_NE(same, box.positions.end()) << path.positions[k].transpose();
         const auto j = static_cast<std::size_t>(same - box.positions.begin());
         EXPECT_EQ(path.layers[k], box.layers[j]) << path.positions[k].transpose();
@@ -246,7 +250,9 @@ TEST(WallPatches, LayeredPolylineCornerOfAnyAngleHasNoGapAndNoCrowd) {
         const Vec<2> end = corner + Vec<2>(std::cos(turn), std::sin(turn));
         for (const double sign : {1.0, -1.0}) {
             const std::string label = fmt::format("{} degrees, side {}", degrees, sign > 0 ? "left" : "right");
-            const Dictionary patch = Dictionary::fromString(fmt::format("type polyline; points ((0 0) (1 0) ({:.17g} {:.17g})); layers 4; side {};", end.x(), end.y(), sign > 0 ? "left" : "right"), "bend");
+            const Dictionary patch = Dictionary::fromString(fmt::format("type polyline; points ((0 0) (1 0) ({:.17g} {:.17g})); layers 4; side {};",
+                                                                        end.x(), end.y(), sign > 0 ? "left" : "right"),
+                                                            "bend");
             const WallPatchParticles<2> walls = generateWithItsLayers<2>(patch, dx, anywhere<2>);
             EXPECT_GT(closestPair(walls), 0.5 * dx) << label;
             // Distance to the path, and whether x is on the wall's side (behind the nearer face;
@@ -294,24 +300,27 @@ TEST(WallPatches, SurfaceIn2DOfOneLayerIsAPolygonsWallAndOfTwoTheLatticeBehindIt
     const std::vector<Vec<2>> clockwise{{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     const std::filesystem::path file = writeCurveObj("tankSquare.obj", clockwise);
     const GenerationDomain<2> domain{Vec<2>::Constant(-0.5), Vec<2>::Constant(1.5), ""};
-    const WallPatchParticles<2> sampled =
-        generateWithItsLayers<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside yes;", file.string()), "tank"), dx, domain);
-    const WallPatchParticles<2> polygon = generateWithItsLayers<2>(Dictionary::fromString("type polygon; points ((0 0) (1 0) (1 1) (0 1)); layers 1; firstLayerOffset 0;", "tank"), dx, domain);
+    const WallPatchParticles<2> sampled = generateWithItsLayers<2>(
+        Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 1; firstLayerOffset 0; fluidInside yes;", file.string()), "tank"), dx,
+        domain);
+    const WallPatchParticles<2> polygon = generateWithItsLayers<2>(
+        Dictionary::fromString("type polygon; points ((0 0) (1 0) (1 1) (0 1)); layers 1; firstLayerOffset 0;", "tank"), dx, domain);
     ASSERT_EQ(sampled.positions.size(), 40u);
     ASSERT_EQ(polygon.positions.size(), 40u);
     for (std::size_t k = 0; k < sampled.positions.size(); ++k) {
-        const auto same = std::find_if(polygon.positions.begin(), polygon.positions.end(), [&](const Vec<2>& x) { return (x - sampled.positions[k]).norm() < 1e-12; });
+        const auto same = std::find_if(polygon.positions.begin(), polygon.positions.end(),
+                                       [&](const Vec<2>& x) { return (x - sampled.positions[k]).norm() < 1e-12; });
         ASSERT_NE(same, polygon.positions.end()) << sampled.positions[k].transpose();
         const auto j = static_cast<std::size_t>(same - polygon.positions.begin());
         EXPECT_LT((sampled.normals[k] - polygon.normals[j]).norm(), 1e-12);
         EXPECT_NEAR(sampled.areas[k], polygon.areas[j], 1e-15);
     }
-    const WallPatchParticles<2> layered =
-        generateWithItsLayers<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes;", file.string()), "tank"), dx, domain);
+    const WallPatchParticles<2> layered = generateWithItsLayers<2>(
+        Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes;", file.string()), "tank"), dx, domain);
     EXPECT_EQ(layered.positions.size(), 4u * 10 * 2 + 4 * 3);
     // fluidInside no: a body; its lattice inside, 2 deep from each side, 10^2 - 6^2.
-    const WallPatchParticles<2> body =
-        generateWithItsLayers<2>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside no;", file.string()), "body"), dx, domain);
+    const WallPatchParticles<2> body = generateWithItsLayers<2>(
+        Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside no;", file.string()), "body"), dx, domain);
     EXPECT_EQ(body.positions.size(), 64u);
     ASSERT_TRUE(body.solid);
     EXPECT_TRUE(body.solid(Vec<2>(0.5, 0.5)));
@@ -368,11 +377,11 @@ TEST(WallPatches, SurfaceWallOfTwoLayersIsTheLatticeWithinTwoSpacingsOutsideATan
         }
     }
     EXPECT_FALSE(walls.solid);
-    EXPECT_THROW(generateWithItsLayers<3>(Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes; firstLayerOffset 0;",
-                                                                          file.string()),
-                                                              "tank"),
-                                      0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""}),
-                 FatalError);
+    EXPECT_THROW(
+        generateWithItsLayers<3>(
+            Dictionary::fromString(fmt::format("type surface; file \"{}\"; layers 2; fluidInside yes; firstLayerOffset 0;", file.string()), "tank"),
+            0.1, {Vec<3>::Constant(-0.5), Vec<3>::Constant(1.5), ""}),
+        FatalError);
 }
 
 TEST(WallPatches, SurfaceWallOfOneLayerIsWhereTheLatticeColumnsPierceIt) {
@@ -431,9 +440,11 @@ TEST(WallPatches, AShapeOfAnotherDimensionOrAnUnknownOneIsRefusedAtItsType) {
         }
         return std::string("accepted");
     };
-    EXPECT_NE(failure("type polyline; points ((0 0) (1 0)); layers 1;", std::integral_constant<int, 3>{}).find("wall patch type 'polyline' is for 2D cases; this case is 3D"),
+    EXPECT_NE(failure("type polyline; points ((0 0) (1 0)); layers 1;", std::integral_constant<int, 3>{})
+                  .find("wall patch type 'polyline' is for 2D cases; this case is 3D"),
               std::string::npos);
-    EXPECT_NE(failure("type surface; file \"a.obj\"; layers 1; fluidInside yes;", std::integral_constant<int, 1>{}).find("is for 2D and 3D cases; this case is 1D"),
+    EXPECT_NE(failure("type surface; file \"a.obj\"; layers 1; fluidInside yes;", std::integral_constant<int, 1>{})
+                  .find("is for 2D and 3D cases; this case is 1D"),
               std::string::npos);
     const std::string unknown = failure("type polyLine; points ((0 0) (1 0)); layers 1;", std::integral_constant<int, 2>{});
     EXPECT_NE(unknown.find("unknown wall patch type 'polyLine'"), std::string::npos) << unknown;

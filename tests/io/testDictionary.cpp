@@ -53,9 +53,10 @@ TEST(Dictionary, SkipsLineAndBlockComments) {
 }
 
 TEST(Dictionary, SubstitutesMacrosFromThisAndEnclosingScopes) {
-    const Dictionary d = parse("H 0.6; g (0 -9.81); defaults { gamma 7; }\n"
-                               "inner { depth $H; gravity $g; eos { $defaults type tait; } copy $defaults; }\n"
-                               "path $defaults/gamma;");
+    const Dictionary d = parse(
+        "H 0.6; g (0 -9.81); defaults { gamma 7; }\n"
+        "inner { depth $H; gravity $g; eos { $defaults type tait; } copy $defaults; }\n"
+        "path $defaults/gamma;");
     const Dictionary& inner = d.subDict("inner");
     EXPECT_DOUBLE_EQ(inner.get<double>("depth"), 0.6);
     EXPECT_EQ(inner.get<std::vector<double>>("gravity"), (std::vector<double>{0, -9.81}));
@@ -82,7 +83,8 @@ TEST(Dictionary, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(errorOf([] { parse("a 1; /* open"); }), "testDict:1:6: error: comment '/*' is never closed by '*/'");
     EXPECT_EQ(errorOf([] { parse("s \"open\n;"); }), "testDict:1:3: error: string is not closed by '\"' on the same line");
     EXPECT_EQ(errorOf([] { parse("3 4;"); }), "testDict:1:1: error: expected a keyword, found number 3");
-    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }), "testDict:1:1: error: unknown directive '#includ' (valid: #include, #includeParameters, and #eval in a value)");
+    EXPECT_EQ(errorOf([] { parse("#includ \"x\";"); }),
+              "testDict:1:1: error: unknown directive '#includ' (valid: #include, #includeParameters, and #eval in a value)");
     EXPECT_EQ(errorOf([] { parse("a $missing;"); }),
               "testDict:1:3: error: macro '$missing' refers to no entry defined before it in this or an enclosing dictionary");
     EXPECT_EQ(errorOf([] { parse("a ;"); }), "testDict:1:1: error: entry 'a' has no value before ';'");
@@ -102,8 +104,10 @@ TEST(Dictionary, MissingFileIsAnError) {
 TEST(Dictionary, IntegerOutOfRangeIsAnError) {
     // Found by the fuzzer: 1e308 read as an integer was converted before its range was checked.
     const Dictionary d = parse("big 1e308; small -3e9; limit 2147483647;");
-    EXPECT_EQ(errorOf([&] { d.get<int>("big"); }), "testDict:1:5: error: keyword 'big' in dictionary 'testDict': expected an integer, found number 1e308");
-    EXPECT_EQ(errorOf([&] { d.get<int>("small"); }), "testDict:1:18: error: keyword 'small' in dictionary 'testDict': expected an integer, found number -3e9");
+    EXPECT_EQ(errorOf([&] { d.get<int>("big"); }),
+              "testDict:1:5: error: keyword 'big' in dictionary 'testDict': expected an integer, found number 1e308");
+    EXPECT_EQ(errorOf([&] { d.get<int>("small"); }),
+              "testDict:1:18: error: keyword 'small' in dictionary 'testDict': expected an integer, found number -3e9");
     EXPECT_EQ(d.get<int>("limit"), 2147483647);
 }
 
@@ -111,7 +115,8 @@ TEST(Dictionary, ListSizePrefixOutOfRangeIsAnError) {
     // Found by the fuzzer: a size prefix of 1e308 was converted to size_t before the comparison.
     const Dictionary d = parse("big 1e308(0 1); negative -1(0 1); good 2(0 1);");
     EXPECT_EQ(errorOf([&] { d.get<std::vector<double>>("big"); }), "testDict:1:5: error: keyword 'big': list size 1e308 does not match its 2 items");
-    EXPECT_EQ(errorOf([&] { d.get<std::vector<double>>("negative"); }), "testDict:1:26: error: keyword 'negative': list size -1 does not match its 2 items");
+    EXPECT_EQ(errorOf([&] { d.get<std::vector<double>>("negative"); }),
+              "testDict:1:26: error: keyword 'negative': list size -1 does not match its 2 items");
     EXPECT_EQ(d.get<std::vector<double>>("good"), (std::vector<double>{0.0, 1.0}));
 }
 
@@ -122,17 +127,27 @@ TEST(Dictionary, DeviceIsNotADictionary) {
 TEST(Dictionary, TypeErrorsSayWhatWasExpectedAndFound) {
     const Dictionary d = parse("inner { endTime abc; n 1.5; flag maybe; v (1 x); d { } w 3; many 1 2; neg -1; }");
     const Dictionary& in = d.subDict("inner");
-    EXPECT_EQ(errorOf([&] { in.get<double>("endTime"); }), "testDict:1:17: error: keyword 'endTime' in dictionary 'testDict/inner': expected a number, found word 'abc'");
-    EXPECT_EQ(errorOf([&] { in.get<int>("n"); }), "testDict:1:24: error: keyword 'n' in dictionary 'testDict/inner': expected an integer, found number 1.5");
-    EXPECT_EQ(errorOf([&] { in.get<bool>("flag"); }),
-              "testDict:1:34: error: keyword 'flag' in dictionary 'testDict/inner': expected a switch (yes/no, true/false, on/off), found word 'maybe'");
-    EXPECT_EQ(errorOf([&] { in.get<std::vector<double>>("v"); }), "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
-    EXPECT_EQ(errorOf([&] { in.get<double>("d"); }), "testDict:1:50: error: keyword 'd' in dictionary 'testDict/inner': expected a number, found a dictionary");
-    EXPECT_EQ(errorOf([&] { in.get<std::string>("w"); }), "testDict:1:58: error: keyword 'w' in dictionary 'testDict/inner': expected a word, found number 3");
-    EXPECT_EQ(errorOf([&] { in.get<double>("many"); }), "testDict:1:68: error: keyword 'many' in dictionary 'testDict/inner': expected a number, found '1 2'");
-    EXPECT_EQ(errorOf([&] { in.getPositive("neg"); }), "testDict:1:71: error: keyword 'neg' in dictionary 'testDict/inner': must be greater than zero, found -1");
-    EXPECT_EQ(errorOf([&] { in.getVector<3>("v"); }), "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
-    EXPECT_EQ(errorOf([&] { in.subDict("w"); }), "testDict:1:56: error: 'w' in dictionary 'testDict/inner' must be a dictionary { ... }, found the value '3'");
+    EXPECT_EQ(errorOf([&] { in.get<double>("endTime"); }),
+              "testDict:1:17: error: keyword 'endTime' in dictionary 'testDict/inner': expected a number, found word 'abc'");
+    EXPECT_EQ(errorOf([&] { in.get<int>("n"); }),
+              "testDict:1:24: error: keyword 'n' in dictionary 'testDict/inner': expected an integer, found number 1.5");
+    EXPECT_EQ(
+        errorOf([&] { in.get<bool>("flag"); }),
+        "testDict:1:34: error: keyword 'flag' in dictionary 'testDict/inner': expected a switch (yes/no, true/false, on/off), found word 'maybe'");
+    EXPECT_EQ(errorOf([&] { in.get<std::vector<double>>("v"); }),
+              "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
+    EXPECT_EQ(errorOf([&] { in.get<double>("d"); }),
+              "testDict:1:50: error: keyword 'd' in dictionary 'testDict/inner': expected a number, found a dictionary");
+    EXPECT_EQ(errorOf([&] { in.get<std::string>("w"); }),
+              "testDict:1:58: error: keyword 'w' in dictionary 'testDict/inner': expected a word, found number 3");
+    EXPECT_EQ(errorOf([&] { in.get<double>("many"); }),
+              "testDict:1:68: error: keyword 'many' in dictionary 'testDict/inner': expected a number, found '1 2'");
+    EXPECT_EQ(errorOf([&] { in.getPositive("neg"); }),
+              "testDict:1:71: error: keyword 'neg' in dictionary 'testDict/inner': must be greater than zero, found -1");
+    EXPECT_EQ(errorOf([&] { in.getVector<3>("v"); }),
+              "testDict:1:46: error: keyword 'v' in dictionary 'testDict/inner': expected a number, found word 'x'");
+    EXPECT_EQ(errorOf([&] { in.subDict("w"); }),
+              "testDict:1:56: error: 'w' in dictionary 'testDict/inner' must be a dictionary { ... }, found the value '3'");
 }
 
 TEST(Dictionary, MissingKeywordNamesTheDictionary) {
@@ -145,9 +160,10 @@ TEST(Dictionary, ParameterFilesServeMacrosWithoutBecomingEntries) {
     // One parameter file for every dictionary of a case: what a dictionary does not use is no error.
     const auto dir = sph::test::freshDirectory();
     sph::test::writeFile(dir / "caseParameters", "H 0.6; dx #eval \"$H / 40\"; unusedHere 7;");
-    sph::test::writeFile(dir / "system" / "dict", "#includeParameters \"../caseParameters\"\n"
-                                                  "depth $H; spacing $dx; length #eval \"5.366 * $H\";\n"
-                                                  "H 0.5; own $H; sub { inner $dx; }\n");
+    sph::test::writeFile(dir / "system" / "dict",
+                         "#includeParameters \"../caseParameters\"\n"
+                         "depth $H; spacing $dx; length #eval \"5.366 * $H\";\n"
+                         "H 0.5; own $H; sub { inner $dx; }\n");
     const Dictionary d = Dictionary::fromFile(dir / "system" / "dict");
     EXPECT_DOUBLE_EQ(d.get<double>("depth"), 0.6);
     EXPECT_DOUBLE_EQ(d.get<double>("spacing"), 0.015);
@@ -234,12 +250,13 @@ TEST(Dictionary, MacroThatReplacesItsOwnSourceWhileMerging) {
 }
 
 TEST(Dictionary, EvalComputesArithmeticOverMacros) {
-    const Dictionary d = parse("H 0.6; dx 0.02; sub { n 3; }\n"
-                               "length #eval \"5.366 * $H\";\n"
-                               "box (0 #eval \"${H} / 2 + ${sub/n}\" 1);\n"
-                               "r0 #eval \"$dx/2\"; c0 #eval \"10 * sqrt(9.81 * $H)\";\n"
-                               "phase #eval \"pi / 2\"; square #eval \"(-$dx)^2\"; wet #eval \"$H > 0.5 ? 1 : 0\";\n"
-                               "twice #eval \"2 * $length\";");
+    const Dictionary d = parse(
+        "H 0.6; dx 0.02; sub { n 3; }\n"
+        "length #eval \"5.366 * $H\";\n"
+        "box (0 #eval \"${H} / 2 + ${sub/n}\" 1);\n"
+        "r0 #eval \"$dx/2\"; c0 #eval \"10 * sqrt(9.81 * $H)\";\n"
+        "phase #eval \"pi / 2\"; square #eval \"(-$dx)^2\"; wet #eval \"$H > 0.5 ? 1 : 0\";\n"
+        "twice #eval \"2 * $length\";");
     EXPECT_DOUBLE_EQ(d.get<double>("length"), 5.366 * 0.6);
     EXPECT_EQ(d.get<std::vector<double>>("box"), (std::vector<double>{0, 0.6 / 2 + 3, 1}));
     EXPECT_DOUBLE_EQ(d.get<double>("r0"), 0.01);
@@ -251,8 +268,7 @@ TEST(Dictionary, EvalComputesArithmeticOverMacros) {
 }
 
 TEST(Dictionary, EvalErrorsNameTheExpressionAndWhatIsWrong) {
-    EXPECT_EQ(errorOf([] { parse("a #eval \"2 *\";"); }),
-              "testDict:1:9: error: #eval \"2 *\": Unexpected end of expression at position 4");
+    EXPECT_EQ(errorOf([] { parse("a #eval \"2 *\";"); }), "testDict:1:9: error: #eval \"2 *\": Unexpected end of expression at position 4");
     EXPECT_EQ(errorOf([] { parse("a #eval 2;"); }),
               "testDict:1:3: error: #eval must be followed by an expression in double quotes, as in: length #eval \"2 * $H\";");
     EXPECT_EQ(errorOf([] { parse("#eval \"1\";"); }),
@@ -261,7 +277,8 @@ TEST(Dictionary, EvalErrorsNameTheExpressionAndWhatIsWrong) {
               "testDict:1:9: error: macro '$H' refers to no entry defined before it in this or an enclosing dictionary");
     EXPECT_EQ(errorOf([] { parse("v (1 2); a #eval \"$v + 1\";"); }),
               "testDict:1:18: error: #eval \"$v + 1\": macro '$v' must name one number; it names 4 tokens");
-    EXPECT_EQ(errorOf([] { parse("w abc; a #eval \"$w\";"); }), "testDict:1:16: error: #eval \"$w\": macro '$w' must name one number; it names word 'abc'");
+    EXPECT_EQ(errorOf([] { parse("w abc; a #eval \"$w\";"); }),
+              "testDict:1:16: error: #eval \"$w\": macro '$w' must name one number; it names word 'abc'");
     EXPECT_EQ(errorOf([] { parse("a #eval \"1 / 0\";"); }), "testDict:1:9: error: #eval \"1 / 0\" is infinite (a division by zero?)");
     EXPECT_EQ(errorOf([] { parse("a #eval \"sqrt(-1)\";"); }),
               "testDict:1:9: error: #eval \"sqrt(-1)\" is not a number (a square root or logarithm of a negative?)");

@@ -19,12 +19,11 @@ struct KernelCase {
 template <class T>
 class KernelProperties : public ::testing::Test {};
 
-using AllKernels = ::testing::Types<
-    KernelCase<sph::CubicSplineMonaghanLattanzio1985<1>, 1>, KernelCase<sph::CubicSplineMonaghanLattanzio1985<2>, 2>,
-    KernelCase<sph::CubicSplineMonaghanLattanzio1985<3>, 3>, KernelCase<sph::QuinticSplineMorris1997<1>, 1>,
-    KernelCase<sph::QuinticSplineMorris1997<2>, 2>, KernelCase<sph::QuinticSplineMorris1997<3>, 3>, KernelCase<sph::WendlandC2<1>, 1>,
-    KernelCase<sph::WendlandC2<2>, 2>, KernelCase<sph::WendlandC2<3>, 3>, KernelCase<sph::WendlandC4<1>, 1>, KernelCase<sph::WendlandC4<2>, 2>,
-    KernelCase<sph::WendlandC4<3>, 3>>;
+using AllKernels = ::testing::Types<KernelCase<sph::CubicSplineMonaghanLattanzio1985<1>, 1>, KernelCase<sph::CubicSplineMonaghanLattanzio1985<2>, 2>,
+                                    KernelCase<sph::CubicSplineMonaghanLattanzio1985<3>, 3>, KernelCase<sph::QuinticSplineMorris1997<1>, 1>,
+                                    KernelCase<sph::QuinticSplineMorris1997<2>, 2>, KernelCase<sph::QuinticSplineMorris1997<3>, 3>,
+                                    KernelCase<sph::WendlandC2<1>, 1>, KernelCase<sph::WendlandC2<2>, 2>, KernelCase<sph::WendlandC2<3>, 3>,
+                                    KernelCase<sph::WendlandC4<1>, 1>, KernelCase<sph::WendlandC4<2>, 2>, KernelCase<sph::WendlandC4<3>, 3>>;
 TYPED_TEST_SUITE(KernelProperties, AllKernels);
 
 // Integral of W over space by the radial measure (2, 2 pi r, 4 pi r^2), Simpson's rule.

@@ -30,8 +30,7 @@ std::unique_ptr<FluidSystem<2>> bodyAndParticle(const Vec<2>& fluidAt, const Vec
     patches[0].name = "body";
     patches[0].end = 3;
     patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{5.0, dx, 0.0, 0.0});
-    patches[0].motion = std::make_unique<FreeBody2D>(
-        Dictionary::fromString("mass 2; momentOfInertia 0.01; centreOfMass (1 1);", "motion"));
+    patches[0].motion = std::make_unique<FreeBody2D>(Dictionary::fromString("mass 2; momentOfInertia 0.01; centreOfMass (1 1);", "motion"));
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
     return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-1, -1), Vec<2>(3, 3),

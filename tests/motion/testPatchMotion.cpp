@@ -90,7 +90,8 @@ TEST(PatchMotion, SlidingSurfaceStaysAndCarriesItsVelocity) {
         lid.at(Vec<2>(0, 0.5), Vec<2>(1, 0), 0.0);  // a side wall: U would push through it
         FAIL() << "a normal velocity was accepted";
     } catch (const FatalError& e) {
-        EXPECT_NE(std::string(e.what()).find("slidingSurface velocity (1 0) is not tangential to the wall at (0 0.5), normal (1 0)"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("slidingSurface velocity (1 0) is not tangential to the wall at (0 0.5), normal (1 0)"),
+                  std::string::npos)
             << e.what();
     }
 }
@@ -181,7 +182,8 @@ TEST(PatchMotion, TableInterpolatesAndMustCoverTheRun) {
         table.checkCovers(0.0, 3.0);
         FAIL() << "a table shorter than the run was accepted";
     } catch (const FatalError& e) {
-        EXPECT_EQ(std::string(e.what()), "error: motion table '" + (dir / "motion.csv").string() + "' covers t from 0 to 2, but the run goes from 0 to 3");
+        EXPECT_EQ(std::string(e.what()),
+                  "error: motion table '" + (dir / "motion.csv").string() + "' covers t from 0 to 2, but the run goes from 0 to 3");
     }
     test::writeFile(dir / "bad.csv", "0 0 0\n1 0.1\n");
     EXPECT_THROW(MotionTable<2>(dictionary("file \"bad.csv\";"), dir.string()), FatalError);

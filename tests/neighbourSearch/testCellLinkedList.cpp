@@ -148,7 +148,8 @@ TEST(CellLinkedList, CellsNearPointsAreThoseWhoseStencilHasOne) {
                     sph::CellLinkedList<2> probe(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1, {periodicX, false});
                     probe.build({query});  // its cell number: the grid is the same
                     const bool marked = cells.anyPointNear(probe.cellAt(0));
-                    ASSERT_EQ(marked, cells.stencilRanges(query).count > 0) << "(" << x << ", " << y << "), periodic " << periodicX << ", build " << build;
+                    ASSERT_EQ(marked, cells.stencilRanges(query).count > 0)
+                        << "(" << x << ", " << y << "), periodic " << periodicX << ", build " << build;
                     (marked ? near : far) += 1;
                 }
             }

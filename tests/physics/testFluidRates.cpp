@@ -66,8 +66,8 @@ TEST(FluidRates, UniformPressureWithFullSupportHasNoAcceleration) {
 double linearPressureError(double hdx) {
     const Vec<2> gradient(200.0, -300.0);  // Pa/m
     const LinearEquationOfState eos(1000.0, 100.0, 1e3);
-    auto lattice = makeLattice(eos, DensityFormulation::Continuity, [&](const Vec<2>& x) { return eos.density(1e3 + gradient.dot(x)); },
-                               NoViscosity{}, hdx);
+    auto lattice = makeLattice(
+        eos, DensityFormulation::Continuity, [&](const Vec<2>& x) { return eos.density(1e3 + gradient.dot(x)); }, NoViscosity{}, hdx);
     lattice.system.evaluateRates(0.0);
     const auto& a = lattice.system.fluid.vector("acceleration");
     const auto& rho = lattice.system.fluid.scalar("density");
@@ -106,8 +106,9 @@ TEST(FluidRates, SummationDensityOfAFullLatticeIsNearRho0) {
 TEST(FluidRates, InviscidCaseAllocatesNoViscousField) {
     auto inviscid = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; });
     EXPECT_FALSE(inviscid.system.walls.hasVector("viscousVelocity"));
-    auto viscous = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
-                               LaminarViscosityMorris1997(1e-3));
+    auto viscous = makeLattice(
+        TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
+        LaminarViscosityMorris1997(1e-3));
     EXPECT_TRUE(viscous.system.walls.hasVector("viscousVelocity"));
 }
 
@@ -115,8 +116,9 @@ TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
     // u = (y^2, 0): nu laplacian u = (2 nu, 0). Morris' operator is Brookshaw's Laplacian times
     // r^2/(r^2 + 0.01 h^2); the regularisation costs about 1.5 % at h = 2 dx.
     const double nu = 1e-2;
-    auto lattice = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
-                               LaminarViscosityMorris1997(nu), 2.0);
+    auto lattice = makeLattice(
+        TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
+        LaminarViscosityMorris1997(nu), 2.0);
     auto& v = lattice.system.fluid.vector("velocity");
     for (std::size_t k = 0; k < v.size(); ++k) v[k] = {std::pow(lattice.system.fluid.position[k].y(), 2), 0.0};
     lattice.system.evaluateRates(0.0);
@@ -127,7 +129,6 @@ TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
             ASSERT_NEAR(a[k].y(), 0.0, 1e-12);
         }
 }
-
 
 TEST(FluidRates, FullyPeriodicLatticeHasNoEdges) {
     // Periodic in both directions, uniform pressure: every particle has full support.

@@ -178,7 +178,9 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
 }
 
 template <class Viscosity>
-concept HasPairFactor = requires(const Viscosity& viscosity) { viscosity.pairFactor(0.0, 0.0, 0.0, 0.0, 0.0, 0.0); };
+concept HasPairFactor = requires(const Viscosity& viscosity) {
+    viscosity.pairFactor(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+};
 
 }  // namespace
 
@@ -240,7 +242,7 @@ TEST(PairLoop, DeltaSphLeavesALinearDensityFieldAlone) {
         for (std::size_t i = 0; i < system.fluid.size(); ++i) {
             const Vec<2>& x = system.fluid.position[i];
             const double rate = std::abs(system.fluid.scalar("densityRate")[i]);
-            if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.46) top = std::max(top, rate);                  // the top row, mid-width
+            if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.46) top = std::max(top, rate);                           // the top row, mid-width
             if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.2 && x.y() < 0.28) interior = std::max(interior, rate);  // full support
         }
         return std::pair(top, interior);
@@ -248,7 +250,7 @@ TEST(PairLoop, DeltaSphLeavesALinearDensityFieldAlone) {
     const Scene<2> s;
     const auto [deltaTop, deltaInterior] = rateAtTheTop(Antuono2010(s.delta, s.h, s.c0));
     const auto [molteniTop, molteniInterior] = rateAtTheTop(MolteniColagrossi2009(s.delta, s.h, s.c0));
-    EXPECT_GT(molteniTop, 1.0);                   // kg/m^3/s: the stratification diffuses at the surface
+    EXPECT_GT(molteniTop, 1.0);  // kg/m^3/s: the stratification diffuses at the surface
     // What remains is the regularisation's: the first term carries r^2 / (r^2 + 0.01 h^2), the
     // gradients' part does not, so a nearest pair keeps 0.01 h^2 / (dx^2 + 0.01 h^2) = 1.7 % of it.
     EXPECT_LT(deltaTop, 0.02 * molteniTop);

@@ -63,10 +63,11 @@ std::unique_ptr<FluidSystem<2>> system(ParticleSet<2> fluid, ParticleSet<2> wall
         patches[0].end = walls.size();
         patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-12, dx, 0.0, 0.0});
     }
-    FluidModels<2> models{WendlandC2<2>(h), LinearEquationOfState(rho0, c0, 0.0), NoViscosity{}, NoDensityDiffusion{}, DensityFormulation::Continuity,
-                          shifting};
-    return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(0.0, periodicY ? 0.0 : -0.2),
-                                            Vec<2>(nx * dx, periodicY ? height : 1.0), Vec<2>::Zero(), 0.0, std::array<bool, 2>{true, periodicY});
+    FluidModels<2> models{WendlandC2<2>(h),     LinearEquationOfState(rho0, c0, 0.0), NoViscosity{},
+                          NoDensityDiffusion{}, DensityFormulation::Continuity,       shifting};
+    return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches),
+                                            Vec<2>(0.0, periodicY ? 0.0 : -0.2), Vec<2>(nx * dx, periodicY ? height : 1.0), Vec<2>::Zero(), 0.0,
+                                            std::array<bool, 2>{true, periodicY});
 }
 
 Vec<2> nearestImage(Vec<2> r, double periodX, double periodY) {

@@ -88,8 +88,7 @@ TEST(CorrectionFlows, StillWaterSettlesOnOneLayerOfWallParticles) {
     const auto totals = rows(dir / "postProcessing/totals/0/totals.dat");
     ASSERT_DOUBLE_EQ(totals.back()[0], 2.0);
     const double kineticPerMass = totals.back()[2] / totals.back()[1] / 0.9;  // over g H
-    EXPECT_LT(kineticPerMass, 1e-5);  // measured 3.2e-6
+    EXPECT_LT(kineticPerMass, 1e-5);                                          // measured 3.2e-6
     const auto pressure = rows(dir / "postProcessing/pressure/0/error.dat");
     EXPECT_LT(pressure.back()[1], 0.03) << "L2 centre-line pressure error over rho g H (measured 0.023)";
 }
-

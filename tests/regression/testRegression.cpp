@@ -135,7 +135,8 @@ double poiseuilleError(const std::string& timeIntegration) {
         double exact = F / (2 * nu) * y * (L - y);
         for (int n = 0; n < 200; ++n) {
             const int k = 2 * n + 1;
-            exact -= 4 * F * L * L / (nu * std::pow(M_PI, 3) * k * k * k) * std::sin(k * M_PI * y / L) * std::exp(-k * k * M_PI * M_PI * nu * t / (L * L));
+            exact -=
+                4 * F * L * L / (nu * std::pow(M_PI, 3) * k * k * k) * std::sin(k * M_PI * y / L) * std::exp(-k * k * M_PI * M_PI * nu * t / (L * L));
         }
         sum2 += (u - exact) * (u - exact);
         ++count;
@@ -148,8 +149,8 @@ double poiseuilleError(const std::string& timeIntegration) {
 
 TEST(Regression, PoiseuilleFlowMatchesTheSeriesSolution) {
     const double l2 = poiseuilleError("");
-    EXPECT_LT(l2, 0.02);              // analytic: within 2 % of u_max
-    EXPECT_NEAR(l2, 0.0129, 0.003);   // stored (this code)
+    EXPECT_LT(l2, 0.02);             // analytic: within 2 % of u_max
+    EXPECT_NEAR(l2, 0.0129, 0.003);  // stored (this code)
 }
 
 TEST(Regression, ImplicitViscosityTakesTenTimesTheExplicitStep) {

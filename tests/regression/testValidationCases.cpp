@@ -60,8 +60,8 @@ std::vector<SummaryRow> runVariant(const std::string& caseName, const std::vecto
 TEST(ValidationCases, TaylorGreenPastTheTearingWithParticleShifting) {
     // dx = 0.04 to t = 1: without shifting the lattice tears along the saddles' stretching lines
     // (by t = 0.3 at dx = 0.02); the particle shifting of Sun et al. (2017) keeps it whole.
-    const std::vector<Setting> coarse{{"system/generateParticlesDict", "spacing", "0.04"}, {"system/controlDict", "endTime", "1"},
-                                      {"system/controlDict", "writeInterval", "1"}};
+    const std::vector<Setting> coarse{
+        {"system/generateParticlesDict", "spacing", "0.04"}, {"system/controlDict", "endTime", "1"}, {"system/controlDict", "writeInterval", "1"}};
     auto shifted = coarse;
     shifted.push_back({"system/sphSchemes", "densityDiffusion", "{ type none; } particleShifting { type sun"});
     const auto plain = runVariant("taylorGreen2D", coarse, "plain");

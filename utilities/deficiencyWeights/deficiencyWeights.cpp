@@ -33,7 +33,7 @@ Options (defaults: the paper's figure):
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::map<std::string, std::string> options{{"-curvature", "concave"}, {"-radius", "1"},   {"-spacing", "0.25"},
+    std::map<std::string, std::string> options{{"-curvature", "concave"},     {"-radius", "1"},  {"-spacing", "0.25"},
                                                {"-influenceRadius", "0.775"}, {"-grid", "0.01"}, {"-output", "deficiencyWeights.csv"}};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
