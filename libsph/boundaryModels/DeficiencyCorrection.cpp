@@ -51,7 +51,7 @@ template <int D, class Weighting>
 DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName)
     : typeName_(std::move(typeName)), calibration_(readCalibration(dict)) {
     // The partner: wallDistance unless the case names a discrete force law.
-    penalty_ = WallDistancePenalty{0.0, context.dx, 0.5 * context.dx, 1.0, context.c0};
+    penalty_ = WallDistancePenalty{0.0, context.dx, 0.5 * context.dx, 1.0, context.c0, 0.5 * context.dx};
     if (const Dictionary* repulsion = dict.findSubDict("repulsion")) {
         const std::string type = repulsion->get<std::string>("type");
         if (type != "wallDistance" && type != "monaghanKajtar" && type != "lennardJones")
@@ -61,6 +61,10 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
             penalty_.K = repulsion->getNonNegativeOrDefault("K", penalty_.K);
             penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
             penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
+            penalty_.springDistance = repulsion->getPositiveOrDefault("springDistance", penalty_.distance);
+            if (penalty_.springDistance > penalty_.distance)
+                repulsion->fail("springDistance",
+                                fmt::format("must not exceed distance {:g}, found {:g}", penalty_.distance, penalty_.springDistance));
         } else {
             repulsion_ = readRepulsionLaw(*repulsion, context);
         }
@@ -104,7 +108,8 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
     return text + ", repulsion " +
            (repulsion_ ? sph::describe(*repulsion_)
-                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}", penalty_.K, penalty_.zeta, penalty_.distance));
+                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}", penalty_.K, penalty_.zeta,
+                                     penalty_.distance, penalty_.springDistance));
 }
 
 template <int D, class Weighting>

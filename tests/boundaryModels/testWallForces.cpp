@@ -12,6 +12,7 @@
 
 #include "support/RestoreThreadCount.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <map>
@@ -372,6 +373,36 @@ TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstR
     const Vec<2> damper = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
     EXPECT_NEAR(damper.y(), 0.25 * 2.0 * 10.0 / (0.5 * dx) * 0.2, 1e-12 * 160.0);
     EXPECT_NEAR(damper.x(), 0.0, 1e-12 * 160.0);
+}
+
+TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
+    // The spring within d_s = dx/4 only: nothing at 0.3 dx (inside d0 = dx/2, at rest, so no
+    // damper either), (K/dx)(1 - 0.1/0.25)^2 at 0.1 dx.
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 40; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
+    for (const double height : {0.3 * dx, 0.1 * dx}) {
+        auto s = system<2>(fluidSet<2>({Vec<2>(1.0, height)}), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                               dictionary(fmt::format("type deficiencyCorrectionBoundaryIntegral; repulsion {{ type wallDistance; K 3; "
+                                                      "springDistance {}; }}",
+                                                      0.25 * dx)),
+                               contextFor(h), "c"),
+                           h, Vec<2>(-1, -1), Vec<2>(3, 1));
+        s->evaluateRates(0.0);
+        const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+        const double springGap = std::max(0.0, 1.0 - height / (0.25 * dx));
+        EXPECT_NEAR(penalty.y(), 3.0 / dx * springGap * springGap, 1e-12 * 3.0 / dx) << height / dx;
+        EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * 3.0 / dx);
+    }
+    try {
+        DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>(
+            dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 3; springDistance 0.04; }"), contextFor(h), "c");
+        FAIL() << "accepted a spring reaching beyond the partner's distance";
+    } catch (const FatalError& e) {
+        EXPECT_NE(std::string(e.what()).find("springDistance"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("must not exceed distance 0.025, found 0.04"), std::string::npos) << e.what();
+    }
 }
 
 TEST(DeficiencyCorrection, NearestSampleTakesEveryTieSoALatticeWallGetsOneCoefficient) {
