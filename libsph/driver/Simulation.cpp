@@ -91,7 +91,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
          std::optional<int> threads) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
-    const RunThreads runThreads(system.fluid.size() + system.walls.size(), threads);
+    const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     TimeIntegrator<D>& integrator = *setup.integrator;
     // The exact time from the state file: a directory name holds only its first digits.
     const double startTime = setup.header.time;

@@ -9,8 +9,8 @@
 
 namespace sph {
 
-int threadsForParticles(std::size_t particles, int available) {
-    const auto byParticles = static_cast<long long>(particles / particlesPerThread);
+int threadsForParticles(std::size_t particles, int dimension, int available) {
+    const auto byParticles = static_cast<long long>(particles / particlesPerThread(dimension));
     return static_cast<int>(std::clamp<long long>(byParticles, 1, std::max(1, available)));
 }
 
@@ -20,14 +20,14 @@ void boundSpinWaiting(char** argv) {
     execv("/proc/self/exe", argv);
 }
 
-RunThreads::RunThreads(std::size_t particles, std::optional<int> requested) : previous_(omp_get_max_threads()) {
-    const int threads = requested ? *requested : threadsForParticles(particles, previous_);
+RunThreads::RunThreads(std::size_t particles, int dimension, std::optional<int> requested) : previous_(omp_get_max_threads()) {
+    const int threads = requested ? *requested : threadsForParticles(particles, dimension, previous_);
     omp_set_num_threads(threads);
     if (requested)
         fmt::print("Threads: {} (-threads)\n", threads);
     else
-        fmt::print("Threads: {} of {} ({} particles, one thread per {}; wcsph -threads N to choose)\n", threads, previous_, particles,
-                   particlesPerThread);
+        fmt::print("Threads: {} of {} ({} particles, one thread per {} in {}D; wcsph -threads N to choose)\n", threads, previous_, particles,
+                   particlesPerThread(dimension), dimension);
 }
 
 RunThreads::~RunThreads() { omp_set_num_threads(previous_); }

@@ -1,10 +1,13 @@
 // The threads a run uses: how many, and how they wait at the end of a parallel region.
 //
-// Count: one thread per `particlesPerThread` particles (fluid + wall), at least one and at most
-// what OpenMP offers (OMP_NUM_THREADS, else the cores); `wcsph -threads N` sets it outright.
-// Every parallel region costs a wake-up and a barrier whatever its size: below about 3,000
-// particles a thread, a second thread saves 6-11 % of a step on a quiet machine and costs
-// 54-82 % beside a busy process (damBreak2D at 2,300 and 3,600 particles; doc/performance.md).
+// Count: one thread per `particlesPerThread(D)` particles (fluid + wall), at least one and at
+// most what OpenMP offers (OMP_NUM_THREADS, else the cores); `wcsph -threads N` sets it
+// outright. Every parallel region costs a wake-up and a barrier whatever its size. In 2D below
+// about 3,000 particles a thread, a second thread saves 6-11 % of a step on a quiet machine and
+// costs 54-82 % beside a busy process (damBreak2D at 2,300 and 3,600 particles). A 3D particle
+// has about 3.5x the neighbours: 2 threads took 1.15x the 1-thread time at 552 particles
+// (hydrostaticTank3D, H/dx = 4) and 0.59x at 3,488 (cylinderTank3D, H/dx = 6; 1.11x beside a
+// busy process), so 3D takes one thread per 800. doc/performance.md.
 //
 // Waiting: libgomp's threads spin for 300,000 turns at a barrier before they sleep. On a shared
 // machine the spinning thread takes the core its late sibling needs, and a 2-thread run took
@@ -19,11 +22,12 @@
 
 namespace sph {
 
-inline constexpr std::size_t particlesPerThread = 3000;
+// Particles per thread in 1D and 2D, and in 3D.
+constexpr std::size_t particlesPerThread(int dimension) { return dimension == 3 ? 800 : 3000; }
 inline constexpr const char* boundedSpinCount = "300";
 
-// clamp(particles / particlesPerThread, 1, available).
-int threadsForParticles(std::size_t particles, int available);
+// clamp(particles / particlesPerThread(dimension), 1, available).
+int threadsForParticles(std::size_t particles, int dimension, int available);
 
 // Unless the user chose a wait policy (OMP_WAIT_POLICY or GOMP_SPINCOUNT set), sets
 // GOMP_SPINCOUNT and replaces the process by the same program with the same arguments. Returns
@@ -31,12 +35,12 @@ int threadsForParticles(std::size_t particles, int available);
 // Call first thing in main, before anything that a second start would repeat.
 void boundSpinWaiting(char** argv);
 
-// Sets OpenMP's thread count for a run of `particles` particles (`requested` if given, else
-// threadsForParticles), says so on standard output, and restores the previous count when it
-// goes out of scope (the tests run several cases in one process).
+// Sets OpenMP's thread count for a run of `particles` particles in `dimension` dimensions
+// (`requested` if given, else threadsForParticles), says so on standard output, and restores the
+// previous count when it goes out of scope (the tests run several cases in one process).
 class RunThreads {
 public:
-    RunThreads(std::size_t particles, std::optional<int> requested);
+    RunThreads(std::size_t particles, int dimension, std::optional<int> requested);
     ~RunThreads();
     RunThreads(const RunThreads&) = delete;
     RunThreads& operator=(const RunThreads&) = delete;

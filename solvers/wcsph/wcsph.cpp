@@ -31,8 +31,8 @@ Options:
                   as .vtu and .csv
   -overwrite      with startFrom startTime: remove the times after the start time that an
                   earlier run wrote (without it the solver refuses to overwrite them)
-  -threads <N>    run on N threads (default: one per 3,000 particles, at most OMP_NUM_THREADS
-                  or the cores)
+  -threads <N>    run on N threads (default: one per 3,000 particles, per 800 in 3D, at most
+                  OMP_NUM_THREADS or the cores)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from

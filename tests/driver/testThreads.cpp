@@ -24,24 +24,28 @@ std::string wcsphHelpWith(const std::string& environment) {
 
 }  // namespace
 
-TEST(Threads, OnePerThreeThousandParticlesWithinWhatOpenMPOffers) {
-    EXPECT_EQ(sph::threadsForParticles(0, 2), 1);
-    EXPECT_EQ(sph::threadsForParticles(5999, 2), 1);
-    EXPECT_EQ(sph::threadsForParticles(6000, 2), 2);
-    EXPECT_EQ(sph::threadsForParticles(2'000'000, 2), 2);
-    EXPECT_EQ(sph::threadsForParticles(20'000, 16), 6);
-    EXPECT_EQ(sph::threadsForParticles(20'000, 0), 1);
+TEST(Threads, OnePerThreeThousandParticlesIn2DAndPerEightHundredIn3DWithinWhatOpenMPOffers) {
+    EXPECT_EQ(sph::threadsForParticles(0, 2, 2), 1);
+    EXPECT_EQ(sph::threadsForParticles(5999, 2, 2), 1);
+    EXPECT_EQ(sph::threadsForParticles(6000, 2, 2), 2);
+    EXPECT_EQ(sph::threadsForParticles(2'000'000, 2, 2), 2);
+    EXPECT_EQ(sph::threadsForParticles(20'000, 2, 16), 6);
+    EXPECT_EQ(sph::threadsForParticles(20'000, 2, 0), 1);
+    EXPECT_EQ(sph::threadsForParticles(5999, 1, 2), 1);
+    EXPECT_EQ(sph::threadsForParticles(1599, 3, 2), 1);
+    EXPECT_EQ(sph::threadsForParticles(1600, 3, 2), 2);
+    EXPECT_EQ(sph::threadsForParticles(20'000, 3, 16), 16);
 }
 
 TEST(Threads, ARunSetsItsCountAndRestoresTheOneBefore) {
     const int before = omp_get_max_threads();
     {
-        const sph::RunThreads small(100, std::nullopt);
+        const sph::RunThreads small(100, 2, std::nullopt);
         EXPECT_EQ(omp_get_max_threads(), 1);
     }
     EXPECT_EQ(omp_get_max_threads(), before);
     {
-        const sph::RunThreads requested(100, 3);
+        const sph::RunThreads requested(100, 2, 3);
         EXPECT_EQ(omp_get_max_threads(), 3);
         int team = 0;
 #pragma omp parallel

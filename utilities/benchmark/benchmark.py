@@ -16,7 +16,7 @@ box extents are rounded to whole spacings. --end-time shortens the run (for the 
 --repeat runs each configuration N times, the thread counts taking turns so that a slow spell of
 a shared machine falls on all of them, and reports the median time loop with the fastest and
 the slowest. Every run sets its thread count with wcsph -threads, so the solver's own rule (one
-thread per 3,000 particles) does not apply; the last column divides each time by the 1-thread
+thread per 3,000 particles, 800 in 3D) does not apply; the last column divides each time by the 1-thread
 time of the same case. --busy runs everything beside a busy process pinned on the last core, as
 a shared machine has one: the last column is then the slowdown that the solver's threads suffer
 from waiting for one another there (the target of doc/performance.md: 1.3 at most).
