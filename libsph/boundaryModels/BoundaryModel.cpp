@@ -40,9 +40,10 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                      return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
                  });
     const std::vector<CoefficientDoc> correction{
-        {"repulsion", "{ type wallDistance; K 0; damping 1; distance dx/2; springDistance distance; }",
-         "the partner that stops penetration: wallDistance (a damper on the closing speed within dx/2 of the wall, and a spring K within "
-         "springDistance: K ~ c0^2/200 within dx/4 holds a slow creep through a one-layer floor), monaghanKajtar or lennardJones"},
+        {"repulsion", "{ type wallDistance; K c0^2/200; damping 1; distance dx/2; springDistance distance/2; }",
+         "the partner that stops penetration: wallDistance (a damper on the closing speed within distance of the wall, and a spring K "
+         "within springDistance that pushes only while the fluid closes on the wall or rests: it holds a slow creep through a one-layer "
+         "floor and returns nothing to an impact), monaghanKajtar or lennardJones"},
         {"calibration", "wallPressure",
          "wallPressure (virtual particles at the extrapolated wall pressure), calibrated (the paper: cancel the sample's normal "
          "acceleration, divided by the blended kernel c_s . n_j) or literal (by W_sj)"},

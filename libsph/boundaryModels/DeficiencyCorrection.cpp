@@ -51,7 +51,7 @@ template <int D, class Weighting>
 DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict, const ModelContext& context, std::string typeName)
     : typeName_(std::move(typeName)), calibration_(readCalibration(dict)) {
     // The partner: wallDistance unless the case names a discrete force law.
-    penalty_ = WallDistancePenalty{0.0, context.dx, 0.5 * context.dx, 1.0, context.c0, 0.5 * context.dx};
+    penalty_ = WallDistancePenalty{context.c0 * context.c0 / 200.0, context.dx, 0.5 * context.dx, 1.0, context.c0, 0.25 * context.dx};
     if (const Dictionary* repulsion = dict.findSubDict("repulsion")) {
         const std::string type = repulsion->get<std::string>("type");
         if (type != "wallDistance" && type != "monaghanKajtar" && type != "lennardJones")
@@ -61,7 +61,7 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
             penalty_.K = repulsion->getNonNegativeOrDefault("K", penalty_.K);
             penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
             penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
-            penalty_.springDistance = repulsion->getPositiveOrDefault("springDistance", penalty_.distance);
+            penalty_.springDistance = repulsion->getPositiveOrDefault("springDistance", 0.5 * penalty_.distance);
             if (penalty_.springDistance > penalty_.distance)
                 repulsion->fail("springDistance",
                                 fmt::format("must not exceed distance {:g}, found {:g}", penalty_.distance, penalty_.springDistance));

@@ -181,8 +181,9 @@ TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) 
 TEST(DeficiencyCorrection, TheDefaultPartnerIsTheWallDistancePenaltyAndAnUnknownOneIsAnError) {
     const DeficiencyCorrection<2, DeficiencyWeightingJones2010> model(dictionary("type deficiencyCorrection;"), contextFor(0.065),
                                                                       "deficiencyCorrection");
-    // A damper (zeta 1) and no spring, acting within dx/2.
-    EXPECT_NE(model.describe().find("calibration wallPressure, direction normal, repulsion wallDistance: K 0, damping 1, distance 0.025"),
+    // A damper (zeta 1) within dx/2 and a spring K = c0^2/200 within dx/4.
+    EXPECT_NE(model.describe().find(
+                  "calibration wallPressure, direction normal, repulsion wallDistance: K 0.5, damping 1, distance 0.025, springDistance 0.0125"),
               std::string::npos)
         << model.describe();
     try {
@@ -346,14 +347,15 @@ TEST(DeficiencyCorrection, FluidMovingTowardsTheWallIsCompressedAsByVirtualParti
 
 TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstRowOn) {
     // One particle a quarter spacing above a long straight wall: every wall particle's tangent
-    // plane is at distance d = dx/4, so the spring is (K/dx)(1 - d/d0)^2 n with d0 = dx/2.
+    // plane is at distance d = dx/4, so a spring reaching d_s = d0 = dx/2 is (K/dx)(1 - d/d0)^2 n.
     const double h = 1.3 * dx;
     std::vector<Vec<2>> walls;
     for (int i = 0; i < 40; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
     for (const double height : {0.25 * dx, 0.5 * dx}) {
         auto s = system<2>(fluidSet<2>({Vec<2>(1.0, height)}), wallSet<2>(walls, Vec<2>(0, 1), dx),
                            std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
-                               dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 3; }"), contextFor(h), "c"),
+                               dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 3; springDistance 0.025; }"),
+                               contextFor(h), "c"),
                            h, Vec<2>(-1, -1), Vec<2>(3, 1));
         s->evaluateRates(0.0);
         const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];  // no fluid neighbour
@@ -402,6 +404,28 @@ TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
     } catch (const FatalError& e) {
         EXPECT_NE(std::string(e.what()).find("springDistance"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("must not exceed distance 0.025, found 0.04"), std::string::npos) << e.what();
+    }
+}
+
+TEST(DeficiencyCorrection, DefaultSpringPushesOnlyWhileTheFluidClosesOnTheWallOrRests) {
+    // The default partner: K = c0^2/200 = 0.5 (c0 = 10) within d_s = dx/4, the damper zeta = 1
+    // within d0 = dx/2. At 0.1 dx: spring (K/dx)(1 - 0.4)^2; closing at 0.2 adds the damper
+    // (1 - 0.2)^2 (c0/d0) 0.2; leaving at 0.2 gets neither (the spring returns nothing).
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 40; ++i) walls.push_back(Vec<2>((i + 0.5) * dx, 0.0));
+    const double spring = 0.5 / dx * 0.6 * 0.6, damper = 0.8 * 0.8 * 10.0 / (0.5 * dx) * 0.2;
+    for (const auto& [normalVelocity, expected] : {std::pair{0.0, spring}, std::pair{-0.2, spring + damper}, std::pair{0.2, 0.0}}) {
+        auto fluid = fluidSet<2>({Vec<2>(1.0, 0.1 * dx)});
+        fluid.vector("velocity")[0] = Vec<2>(0.3, normalVelocity);
+        auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                               dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
+                           h, Vec<2>(-1, -1), Vec<2>(3, 1));
+        s->evaluateRates(0.0);
+        const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+        EXPECT_NEAR(penalty.y(), expected, 1e-12 * (spring + damper)) << "normal velocity " << normalVelocity;
+        EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * (spring + damper));
     }
 }
 

@@ -22,9 +22,11 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
 each with the wall time that produced it (runs two at a time, one thread each). Penetrations
 are counted at every step (the wallPenetrations function object).
 
-Usage: utilities/boundarySuite/boundarySuite.py [--quick]   (from the repository root; the
-binaries are taken from $SPHKIT_BIN or build/bin; --quick runs the hydrostatic tank at dx = 0.05
-and the flows that hurt at their coarsest resolution only; the full suite takes about an hour)
+Usage: utilities/boundarySuite/boundarySuite.py [--quick] [--models=NAME,...]   (from the
+repository root; the binaries are taken from $SPHKIT_BIN or build/bin; --quick runs the
+hydrostatic tank at dx = 0.05 and the flows that hurt at their coarsest resolution only; the
+full suite takes about an hour; --models re-runs the deforming tank and the flows of the named
+flow models only and replaces their rows in doc/boundarySuite.md, keeping every other row)
 """
 import concurrent.futures
 import csv
@@ -44,6 +46,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 WORK = os.path.join(ROOT, "build", "boundarySuite")
 QUICK = "--quick" in sys.argv
+ONLY = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--models=")), None)
 sys.path.insert(0, os.path.join(ROOT, "cases", "sloshingTank2D"))
 from linearSloshing import AMPLITUDE as LINEAR_SLOSHING_AMPLITUDE  # noqa: E402
 
@@ -377,13 +380,14 @@ def box_row(model, patch, layout, resolution):
 def flow_rows():
     """Every flow at three resolutions (the shipped one among them), the coarsest with --quick."""
     pick = lambda resolutions: resolutions[:1] if QUICK else resolutions  # noqa: E731
-    dam = in_parallel(dam_break_row, [(m, p, l, r) for r in pick((20, 40, 80)) for m, p, l in FLOW_MODELS])
-    slosh = in_parallel(sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in FLOW_MODELS])
-    linear = in_parallel(linear_sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in FLOW_MODELS])
+    models = [m for m in FLOW_MODELS if ONLY is None or m[0] in ONLY]
+    dam = in_parallel(dam_break_row, [(m, p, l, r) for r in pick((20, 40, 80)) for m, p, l in models])
+    slosh = in_parallel(sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in models])
+    linear = in_parallel(linear_sloshing_row, [(m, p, l, r) for r in pick((15, 30, 45)) for m, p, l in models])
     bulge = in_parallel(bulge_row, [(m, p, l, period, r) for period, r in [(1.2, r) for r in pick((15, 30, 60))] + [(0.8, 30)]
-                                    for m, p, l in FLOW_MODELS])
-    bulge3d = in_parallel(bulge3d_row, [(m, p, l, r) for r in pick((8, 10, 12)) for m, p, l in FLOW_MODELS])
-    box = in_parallel(box_row, [(m, p, l, r) for r in pick((6, 8, 10)) for m, p, l in FLOW_MODELS])
+                                    for m, p, l in models])
+    bulge3d = in_parallel(bulge3d_row, [(m, p, l, r) for r in pick((8, 10, 12)) for m, p, l in models])
+    box = in_parallel(box_row, [(m, p, l, r) for r in pick((6, 8, 10)) for m, p, l in models])
     return dam, slosh, linear, bulge, bulge3d, box
 
 
@@ -392,7 +396,7 @@ def flow_lines(dam, slosh, linear, bulge, bulge3d, box):
     lines = ["", "## Flows that hurt: every wall model on the same case", "",
              "Every run alone on one thread, two at a time; penetrations: the most fluid particles behind the wall's first layer of "
              "particles at any step (wallPenetrations). The correction runs with its defaults (calibration wallPressure, the "
-             "wallDistance damper); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D tank).", "",
+             "wallDistance partner); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D tank).", "",
              "### Standard 2D dam break (damBreakWallPressure2D, to T = t sqrt(g/H) = 8)", "",
              "Downstream-wall pressure at P1-P4 against De Courcy et al. (2024): RMS of the Delta T = 0.1 window means, T = 2-7, "
              "over rho g H (the fluid interpolated dx/2 from the wall for every model).", "",
@@ -445,9 +449,55 @@ def flow_lines(dam, slosh, linear, bulge, bulge3d, box):
     return lines
 
 
+def deforming_lines(deforming):
+    lines = ["## Deforming tank (deformingTank2D, the floor bulges 5 dx in and out over 2 s)", "",
+             "Near the bulge (|x - 1| < 0.3, within 2h of the floor), averaged over the 40 written times: pressure noise (RMS of "
+             "p - rho g (H - y) about its mean; rho g dx = 196 Pa), the smallest nearest-neighbour distance, the fraction of "
+             "particles closer than 0.75 dx to a neighbour, and the most fluid particles below the floor at any written time.", "",
+             "| model | pressure noise [Pa] | smallest neighbour distance / dx | fraction below 0.75 dx | penetrations | wall time [s] |",
+             "|---|---|---|---|---|---|"]
+    for name, noise, closest, clumped, penetrations, seconds in deforming:
+        lines.append("| %s | %.1f | %.2f | %.4f | %d | %.1f |" % (name, noise, closest, clumped, penetrations, seconds))
+    return lines
+
+
+def table_rows(lines):
+    """Each table row's index by its section and its key cells: the model and the resolution
+    (and, in the 2D bulge's table, the period; in the deforming tank's, the model alone)."""
+    rows, heading = {}, ""
+    for index, line in enumerate(lines):
+        if line.startswith("#"):
+            heading = line
+        elif line.startswith("| ") and not line.startswith("|---"):
+            width = 1 if heading.startswith("## Deforming") else 3 if heading.startswith("### Steep fast floor bulge (steepBulge2D") else 2
+            rows[(heading, tuple(cell.strip() for cell in line.strip("|").split("|")[:width]))] = index
+    return rows
+
+
+def replace_rows(new_lines):
+    """--models: writes the re-run rows over their old ones in doc/boundarySuite.md."""
+    path = os.path.join(ROOT, "doc", "boundarySuite.md")
+    with open(path) as f:
+        lines = f.read().split("\n")
+    old = table_rows(lines)
+    for key, index in table_rows(new_lines).items():
+        if key not in old:
+            raise SystemExit("boundarySuite.py: no row %s in %s; run the whole suite" % (key, path))
+        lines[old[key]] = new_lines[index]
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+    print("\n".join(new_lines))
+
+
 def main():
     if not os.path.exists(os.path.join(BIN, "wcsph")):
         raise SystemExit("boundarySuite.py: %s/wcsph not found; build first (./Allwmake)" % BIN)
+    if ONLY is not None:
+        unknown = [name for name in ONLY if name not in [m[0] for m in FLOW_MODELS]]
+        if unknown:
+            raise SystemExit("boundarySuite.py: --models: unknown %s; valid: %s" % (", ".join(unknown), ", ".join(m[0] for m in FLOW_MODELS)))
+        replace_rows(deforming_lines(deforming_rows()) + flow_lines(*flow_rows()))
+        return
     tanks = tank_rows()
     statics = static_rows()
     hydrostatic = hydrostatic_rows()
@@ -491,15 +541,7 @@ def main():
         else:
             lines.append("| %s | %g | %.4f | %.4f | %.4f | %.4f | %.3f | %.3f | %.2e | %d | %.2f | ran to t = 2 |"
                          % (name, dx, wl2, wmx, l2, mx, gap, spread, kinetic, penetrations, s))
-    lines += ["", "## Deforming tank (deformingTank2D, the floor bulges 5 dx in and out over 2 s)", "",
-              "Near the bulge (|x - 1| < 0.3, within 2h of the floor), averaged over the 40 written times: pressure noise (RMS of "
-              "p - rho g (H - y) about its mean; rho g dx = 196 Pa), the smallest nearest-neighbour distance, the fraction of "
-              "particles closer than 0.75 dx to a neighbour, and the most fluid particles below the floor at any written time.", "",
-              "| model | pressure noise [Pa] | smallest neighbour distance / dx | fraction below 0.75 dx | penetrations | wall time [s] |",
-              "|---|---|---|---|---|---|"]
-    for name, noise, closest, clumped, penetrations, seconds in deforming:
-        lines.append("| %s | %.1f | %.2f | %.4f | %d | %.1f |" % (name, noise, closest, clumped, penetrations, seconds))
-    lines += flow_lines(*flows)
+    lines += [""] + deforming_lines(deforming) + flow_lines(*flows)
     with open(os.path.join(ROOT, "doc", "boundarySuite.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
