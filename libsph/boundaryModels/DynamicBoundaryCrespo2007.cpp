@@ -9,16 +9,36 @@
 
 namespace sph {
 
+namespace {
+
+// The wall particles' pressure from their own density by the equation of state, never below
+// p(rho0) (a wall does not pull), and the velocity the viscous term sees: their own.
+template <int D>
+void pressureAndViscousVelocity(FluidSystem<D>& system, std::size_t begin, std::size_t end) {
+    const Vec<D>* vWall = system.walls.vector("velocity").data();
+    const double* rhoWall = system.walls.scalar("density").data();
+    double* pWall = system.walls.scalar("pressure").data();
+    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
+    std::visit(
+        [&](const auto& eos) {
+#pragma omp parallel for schedule(static)
+            for (std::size_t w = begin; w < end; ++w) {
+                pWall[w] = eos.pressure(std::max(rhoWall[w], eos.rho0));
+                if (vViscous) vViscous[w] = vWall[w];
+            }
+        },
+        system.models().eos);
+}
+
+}  // namespace
+
 template <int D>
 void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double) {
     const Vec<D>* vFluid = system.fluid.vector("velocity").data();
     const double* mFluid = system.fluid.scalar("mass").data();
     const Vec<D>* xWall = system.walls.position.data();
     const Vec<D>* vWall = system.walls.vector("velocity").data();
-    const double* rhoWall = system.walls.scalar("density").data();
     double* drhoWall = system.walls.scalar("densityRate").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
     const double radius2 = system.supportRadius() * system.supportRadius();
     // The wall particles in the order of their cell list, which has the fluid list's grid: the
     // particles of a wall cell share its stencil of fluid cells. Their fluid neighbours are listed
@@ -81,15 +101,7 @@ void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size
                 densityRates(kernel, std::false_type{});
         },
         system.models().kernel);
-    std::visit(
-        [&](const auto& eos) {
-#pragma omp parallel for schedule(static)
-            for (std::size_t w = begin; w < end; ++w) {
-                pWall[w] = eos.pressure(std::max(rhoWall[w], eos.rho0));
-                if (vViscous) vViscous[w] = vWall[w];
-            }
-        },
-        system.models().eos);
+    pressureAndViscousVelocity(system, begin, end);
 }
 
 template class DynamicBoundaryCrespo2007<1>;

@@ -123,63 +123,65 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
     }
 }
 
-}  // namespace
+// The particle state of the start time, checked: fields, values, distinct particles, inside the domain.
+template <int D>
+struct StartState {
+    ParticleSet<D> fluid{"fluid"}, walls{"walls"};
+    StateHeader wallHeader;
+    Vec<D> domainMin, domainMax;
+    std::array<bool, D> periodic{};
+};
 
 template <int D>
-CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start) {
-    CaseSetup<D> setup;
-    Dictionary schemes = readCaseDictionary(caseDirectory, "system/sphSchemes");
-    Dictionary timeIntegration = readCaseDictionary(caseDirectory, "system/timeIntegration");
-    Dictionary fluidDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
-    Dictionary boundaryDict = readCaseDictionary(caseDirectory, "constant/boundaryProperties");
-
-    // Particle state.
+StartState<D> readStartState(const TimeDirectory& start, StateHeader& header) {
+    StartState<D> state;
     const auto fluidFile = start.path / "fluid.vtu";
     const auto wallFile = start.path / "walls.vtu";
-    StateHeader wallHeader;
-    ParticleSet<D> fluid = readParticleFile<D>(fluidFile, "fluid", setup.header);
-    ParticleSet<D> walls = readParticleFile<D>(wallFile, "walls", wallHeader);
-    requireFields(fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
-    requireFields(walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
-    requireValidValues(fluid, fluidFile);
-    requireValidValues(walls, wallFile);
-    requireDistinctParticles(fluid, fluidFile, true);
-    requireDistinctParticles(walls, wallFile, false);
-    if (fluid.size() == 0)
+    state.fluid = readParticleFile<D>(fluidFile, "fluid", header);
+    state.walls = readParticleFile<D>(wallFile, "walls", state.wallHeader);
+    requireFields(state.fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
+    requireFields(state.walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
+    requireValidValues(state.fluid, fluidFile);
+    requireValidValues(state.walls, wallFile);
+    requireDistinctParticles(state.fluid, fluidFile, true);
+    requireDistinctParticles(state.walls, wallFile, false);
+    if (state.fluid.size() == 0)
         throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
-    const double dx = setup.header.spacing;
-    if (!(dx > 0.0)) throw FatalError(fmt::format("error: '{}': particle spacing must be positive, found {:g}", fluidFile.string(), dx));
-    Vec<D> domainMin, domainMax;
+    if (!(header.spacing > 0.0))
+        throw FatalError(fmt::format("error: '{}': particle spacing must be positive, found {:g}", fluidFile.string(), header.spacing));
     for (int d = 0; d < D; ++d) {
-        domainMin[d] = setup.header.domainMin[static_cast<std::size_t>(d)];
-        domainMax[d] = setup.header.domainMax[static_cast<std::size_t>(d)];
+        state.domainMin[d] = header.domainMin[static_cast<std::size_t>(d)];
+        state.domainMax[d] = header.domainMax[static_cast<std::size_t>(d)];
     }
-    std::array<bool, D> periodic{};
-    for (std::size_t d = 0; d < setup.header.periodic.size() && d < static_cast<std::size_t>(D); ++d) periodic[d] = setup.header.periodic[d] != 0.0;
+    for (std::size_t d = 0; d < header.periodic.size() && d < static_cast<std::size_t>(D); ++d) state.periodic[d] = header.periodic[d] != 0.0;
+    const ParticleSet<D>& fluid = state.fluid;
     for (std::size_t i = 0; i < fluid.size(); ++i)
-        if ((fluid.position[i].array() < domainMin.array()).any() || (fluid.position[i].array() > domainMax.array()).any())
+        if ((fluid.position[i].array() < state.domainMin.array()).any() || (fluid.position[i].array() > state.domainMax.array()).any())
             throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({:g}) lies outside the domain [({:g}), ({:g})]", fluidFile.string(),
-                                         fluid.globalId[i], fmt::join(fluid.position[i], " "), fmt::join(domainMin, " "), fmt::join(domainMax, " ")));
+                                         fluid.globalId[i], fmt::join(fluid.position[i], " "), fmt::join(state.domainMin, " "),
+                                         fmt::join(state.domainMax, " ")));
+    return state;
+}
 
-    // Fluid properties and schemes.
-    const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
-    setup.rho0 = properties.rho0;
-    fmt::print("Selecting equationOfState {}\n", describe(properties.eos));
-    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({:g}), gravityRampTime {:g}\n", properties.rho0, properties.nu,
-               fmt::join(properties.gravity, " "), properties.gravityRampTime);
-
+// The kernel from system/sphSchemes, with h = hdx dx.
+template <int D>
+Kernel<D> selectKernel(const Dictionary& schemes, double dx, double& h) {
     const Dictionary& kernelDict = schemes.subDict("kernel");
     const double hdx = kernelDict.getPositive("hdx");
     if (hdx < 1.0) kernelDict.fail("hdx", fmt::format("h = hdx dx must not be smaller than the particle spacing; found hdx {:g} (valid: >= 1)", hdx));
-    const double h = hdx * dx;
+    h = hdx * dx;
     Kernel<D> kernel = selectByType(makeKernelRegistry<D>(), kernelDict, h);
     if (!std::visit([](const auto& k) { return compiledKernel<std::decay_t<decltype(k)>>; }, kernel))
         kernelDict.fail("type", fmt::format("kernel '{}' is not compiled into this build (CMake option SPHKIT_KERNELS); compiled kernels: {}",
                                             kernelDict.get<std::string>("type"), compiledKernelNames));
     fmt::print("Selecting kernel {}: hdx {:g}, dx {:g}, h {:g}, support radius {:g}\n", kernelDict.get<std::string>("type"), hdx, dx, h,
                std::visit([](const auto& k) { return k.supportRadius(); }, kernel));
+    return kernel;
+}
 
-    const ModelContext context = modelContext(properties, dx, h);
+// Density formulation, viscosity, density diffusion and particle shifting from system/sphSchemes.
+template <int D>
+FluidModels<D> selectFluidModels(const Dictionary& schemes, Kernel<D> kernel, const FluidProperties<D>& properties, const ModelContext& context) {
     const Dictionary& densityDict = schemes.subDict("density");
     const DensityFormulation density = selectDensity(densityDict);
     fmt::print("Selecting density {}\n", densityDict.get<std::string>("type"));
@@ -193,32 +195,36 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     fmt::print("Selecting densityDiffusion {}\n", describe<D>(diffusion));
     // Optional: a case that does not name it shifts nothing.
     const Dictionary* shiftingDict = schemes.findSubDict("particleShifting");
-    const ParticleShifting shifting =
-        shiftingDict ? selectByType(makeParticleShiftingRegistry(), *shiftingDict, *shiftingDict, context) : ParticleShifting{NoShifting{}, {}, dx};
+    const ParticleShifting shifting = shiftingDict ? selectByType(makeParticleShiftingRegistry(), *shiftingDict, *shiftingDict, context)
+                                                   : ParticleShifting{NoShifting{}, {}, context.dx};
     if (shiftingDict) fmt::print("Selecting particleShifting {}\n", describe(shifting));
+    return {std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density, shifting};
+}
 
-    // Boundary patches: one model per patch named in the wall state.
-    setup.patchNames = wallHeader.patchNames;
+// One boundary model per patch named in the wall state, from constant/boundaryProperties; the
+// walls sorted so that the wall-particle patches come first (they enter the kernel sums), then
+// the wall-force patches.
+template <int D>
+std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, const Dictionary& boundaryDict, const std::filesystem::path& wallFile,
+                                    ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const ModelContext& context, double support) {
     const auto& patchOfWall = walls.integer("patch");
     for (int p : patchOfWall)
-        if (p < 0 || static_cast<std::size_t>(p) >= setup.patchNames.size())
+        if (p < 0 || static_cast<std::size_t>(p) >= patchNames.size())
             throw FatalError(fmt::format("error: '{}': wall patch index {} has no name in patchNames", wallFile.string(), p));
     for (const std::string& keyword : boundaryDict.keywords()) {
         if (keyword == "FoamFile") continue;
-        if (std::find(setup.patchNames.begin(), setup.patchNames.end(), keyword) == setup.patchNames.end())
+        if (std::find(patchNames.begin(), patchNames.end(), keyword) == patchNames.end())
             throw FatalError(boundaryDict.entry(keyword).where(),
                              fmt::format("patch '{}' in constant/boundaryProperties is not a wall patch of the case; its patches are: {}", keyword,
-                                         setup.patchNames.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(setup.patchNames, ", "))));
+                                         patchNames.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(patchNames, ", "))));
     }
     const auto boundaryRegistry = makeBoundaryModelRegistry<D>();
     std::vector<std::unique_ptr<BoundaryModel<D>>> boundaryModels;
-    for (const std::string& name : setup.patchNames) {
+    for (const std::string& name : patchNames) {
         const Dictionary& patchDict = boundaryDict.subDict(name);
         boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
-    const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
-    requireWallLayout(walls, boundaryDict, setup.patchNames, boundaryModels, support, dx);
-    // Wall-particle patches first (they enter the kernel sums), then wall-force patches.
+    requireWallLayout(walls, boundaryDict, patchNames, boundaryModels, support, context.dx);
     const auto rank = [&](int patch) {
         return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);
     };
@@ -226,23 +232,22 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return rank(patchOfWall[a]) < rank(patchOfWall[b]); });
     walls.permute(order);
-    std::vector<Patch<D>> patches;
-    const auto& sortedPatch = walls.integer("patch");
-    std::vector<std::size_t> patchOrder(setup.patchNames.size());
+    std::vector<std::size_t> patchOrder(patchNames.size());
     for (std::size_t p = 0; p < patchOrder.size(); ++p) patchOrder[p] = p;
     std::stable_sort(patchOrder.begin(), patchOrder.end(),
                      [&](std::size_t a, std::size_t b) { return rank(static_cast<int>(a)) < rank(static_cast<int>(b)); });
+    std::vector<Patch<D>> patches;
+    const auto& sortedPatch = walls.integer("patch");
     std::size_t begin = 0;
     for (std::size_t p : patchOrder) {
         Patch<D> patch;
-        patch.name = setup.patchNames[p];
+        patch.name = patchNames[p];
         patch.begin = begin;
         patch.end = begin + static_cast<std::size_t>(std::count(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)));
         begin = patch.end;
         patch.model = std::move(boundaryModels[p]);
         fmt::print("Selecting boundary model for patch {} ({} particles): {}\n", patch.name, patch.end - patch.begin, patch.model->describe());
-        const Dictionary& patchDict = boundaryDict.subDict(patch.name);
-        if (const Dictionary* motion = patchDict.findSubDict("motion")) {
+        if (const Dictionary* motion = boundaryDict.subDict(patch.name).findSubDict("motion")) {
             patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
             fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
             if (patch.motion->isFree() && patch.model->actsThroughWallParticles())
@@ -253,8 +258,12 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
         }
         patches.push_back(std::move(patch));
     }
+    return patches;
+}
 
-    // Time integration.
+// The time integrator and the step's limits from system/timeIntegration.
+template <int D>
+void selectIntegrator(const Dictionary& timeIntegration, const Dictionary& schemes, bool shifts, CaseSetup<D>& setup) {
     const Dictionary& integratorDict = timeIntegration.subDict("integrator");
     setup.integrator = selectByType(makeTimeIntegratorRegistry<D>(), integratorDict, integratorDict);
     setup.integratorType = integratorDict.get<std::string>("type");
@@ -265,24 +274,53 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
                                                     setup.courant));
     setup.maxDeltaT = timeIntegration.getPositiveOrDefault("maxDeltaT", std::numeric_limits<double>::infinity());
     setup.fixedDeltaT = timeIntegration.getPositiveOrDefault("fixedDeltaT", 0.0);
-    if (shifting.enabled() && !setup.integrator->allowsReordering())
-        shiftingDict->fail("type", fmt::format("particle shifting moves the particles after every step, which the history of integrator '{}' "
-                                               "cannot follow; select another integrator (system/timeIntegration) or particleShifting none",
-                                               setup.integratorType));
+    if (shifts && !setup.integrator->allowsReordering())
+        schemes.subDict("particleShifting")
+            .fail("type", fmt::format("particle shifting moves the particles after every step, which the history of integrator '{}' "
+                                      "cannot follow; select another integrator (system/timeIntegration) or particleShifting none",
+                                      setup.integratorType));
     fmt::print("Selecting time integrator {}: courant {:g}{}{}\n", setup.integrator->describe(), setup.courant,
                std::isfinite(setup.maxDeltaT) ? fmt::format(", maxDeltaT {:g}", setup.maxDeltaT) : "",
                setup.fixedDeltaT > 0.0 ? fmt::format(", fixedDeltaT {:g}", setup.fixedDeltaT) : "");
+}
+
+}  // namespace
+
+template <int D>
+CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start) {
+    CaseSetup<D> setup;
+    Dictionary schemes = readCaseDictionary(caseDirectory, "system/sphSchemes");
+    Dictionary timeIntegration = readCaseDictionary(caseDirectory, "system/timeIntegration");
+    Dictionary fluidDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
+    Dictionary boundaryDict = readCaseDictionary(caseDirectory, "constant/boundaryProperties");
+    StartState<D> state = readStartState<D>(start, setup.header);
+    const double dx = setup.header.spacing;
+
+    const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
+    setup.rho0 = properties.rho0;
+    fmt::print("Selecting equationOfState {}\n", describe(properties.eos));
+    fmt::print("Fluid: rho0 {:g}, nu {:g}, gravity ({:g}), gravityRampTime {:g}\n", properties.rho0, properties.nu,
+               fmt::join(properties.gravity, " "), properties.gravityRampTime);
+    double h = 0.0;
+    Kernel<D> kernel = selectKernel<D>(schemes, dx, h);
+    const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
+    const ModelContext context = modelContext(properties, dx, h);
+    FluidModels<D> models = selectFluidModels<D>(schemes, std::move(kernel), properties, context);
+
+    setup.patchNames = state.wallHeader.patchNames;
+    std::vector<Patch<D>> patches =
+        selectPatches<D>(caseDirectory, boundaryDict, start.path / "walls.vtu", state.walls, setup.patchNames, context, support);
+    selectIntegrator<D>(timeIntegration, schemes, models.shifting.enabled(), setup);
 
     for (int d = 0; d < D; ++d)
-        if (periodic[static_cast<std::size_t>(d)] && domainMax[d] - domainMin[d] < 3.0 * support)
+        if (state.periodic[static_cast<std::size_t>(d)] && state.domainMax[d] - state.domainMin[d] < 3.0 * support)
             throw FatalError(
                 fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
                             "lengthen the domain or reduce hdx",
-                            fluidFile.string(), "xyz"[d], domainMax[d] - domainMin[d], 3.0 * support));
-    FluidModels<D> models{std::move(kernel), properties.eos, std::move(viscosity), std::move(diffusion), density, shifting};
-    setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domainMin, domainMax,
-                                                    properties.gravity, properties.gravityRampTime, periodic);
-    setup.integrator->checkCompatible(*setup.system, integratorDict);
+                            (start.path / "fluid.vtu").string(), "xyz"[d], state.domainMax[d] - state.domainMin[d], 3.0 * support));
+    setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(state.fluid), std::move(state.walls), std::move(patches),
+                                                    state.domainMin, state.domainMax, properties.gravity, properties.gravityRampTime, state.periodic);
+    setup.integrator->checkCompatible(*setup.system, timeIntegration.subDict("integrator"));
     setup.dictionaries.push_back(std::move(schemes));
     setup.dictionaries.push_back(std::move(timeIntegration));
     setup.dictionaries.push_back(std::move(fluidDict));

@@ -80,101 +80,114 @@ void requireDistinctPatches(const Dictionary& boundaries, const std::vector<std:
                                              patchNames[p], shared[p][q], total[p], patchNames[q]));
 }
 
+// The domain and its lattice spacing, checked before anything is allocated.
 template <int D>
-GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory) {
-    const double dx = dict.getPositive("spacing");
+struct LatticeDomain {
+    double dx;
+    Vec<D> lo, hi;
+    std::vector<double> periodic;  // empty, or 1 per periodic direction
+};
+
+template <int D>
+LatticeDomain<D> readLatticeDomain(const Dictionary& dict) {
+    LatticeDomain<D> lattice;
+    lattice.dx = dict.getPositive("spacing");
     const Dictionary& domain = dict.subDict("domain");
-    const Vec<D> lo = domain.getVector<D>("min"), hi = domain.getVector<D>("max");
+    lattice.lo = domain.getVector<D>("min");
+    lattice.hi = domain.getVector<D>("max");
+    const Vec<D>&lo = lattice.lo, &hi = lattice.hi;
     for (int d = 0; d < D; ++d)
         if (!(hi[d] > lo[d])) domain.fail("max", fmt::format("must exceed min in every direction (direction {}: {:g} <= {:g})", d, hi[d], lo[d]));
-    // Before anything is allocated: the domain's lattice is walked by the shape fillers and
-    // covered by the generator's neighbour search (16 bytes a lattice point).
+    // The domain's lattice is walked by the shape fillers and covered by the generator's
+    // neighbour search (16 bytes a lattice point).
     double latticePoints = 1.0;
     for (int d = 0; d < D; ++d) {
-        const double across = (hi[d] - lo[d]) / dx;
+        const double across = (hi[d] - lo[d]) / lattice.dx;
         if (!(across <= maxSpacingsAcross))
             dict.fail("spacing", fmt::format("the domain is {:.3g} spacings of {:g} across in direction {} (at most {}): is the spacing a slip?",
-                                             across, dx, d, maxSpacingsAcross));
+                                             across, lattice.dx, d, maxSpacingsAcross));
         latticePoints *= across + 1.0;
     }
     requireMemory(16.0 * latticePoints,
-                  fmt::format("{}: spacing {:g} over the domain ({:.3g} lattice points)", dict.where().str(), dx, latticePoints));
-    std::vector<double> periodic;
+                  fmt::format("{}: spacing {:g} over the domain ({:.3g} lattice points)", dict.where().str(), lattice.dx, latticePoints));
     if (domain.found("periodic")) {
-        periodic.assign(static_cast<std::size_t>(D), 0.0);
+        lattice.periodic.assign(static_cast<std::size_t>(D), 0.0);
         for (const std::string& axis : domain.get<std::vector<std::string>>("periodic")) {
             const auto at = std::string("xyz").substr(0, D).find(axis);
             if (axis.size() != 1 || at == std::string::npos)
                 domain.fail("periodic",
                             fmt::format("unknown direction '{}'; valid directions are: {}", axis, std::string("x y z").substr(0, 2 * D - 1)));
-            periodic[at] = 1.0;
+            lattice.periodic[at] = 1.0;
         }
     }
-    const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
-    if (initialPressure != "none" && initialPressure != "hydrostatic" && initialPressure != "analytic")
-        dict.fail("initialPressure", "expected none, hydrostatic or analytic, found '" + initialPressure + "'");
+    return lattice;
+}
 
-    const Dictionary fluidPropertiesDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
-    const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
-    const double rho0 = properties.rho0;
-    const double volume = std::pow(dx, D);
-    const GenerationDomain<D> shapeDomain{lo, hi, caseDirectory};
+// Every wall patch's particles, in the order the patches are listed.
+template <int D>
+struct GeneratedWalls {
+    WallPatchParticles<D> particles;
+    std::vector<std::string> patchNames;
+    std::vector<int> patchOf;                                // per particle
+    std::vector<std::function<bool(const Vec<D>&)>> solids;  // where no fluid goes
+};
 
-    // Walls first: fluid particles overlapping them are dropped.
-    ParticleSet<D> walls("walls");
-    std::vector<std::string> patchNames, notes;
-    const Dictionary* boundaries = dict.findSubDict("boundaries");
-    WallPatchParticles<D> allWalls;
-    WallLayoutFromModel<D> layoutFromModel(caseDirectory, dx, properties);
-    std::vector<int> patchOf;
-    std::vector<std::function<bool(const Vec<D>&)>> solids;
-    if (boundaries) {
-        for (const std::string& name : boundaries->keywords()) {
-            const Dictionary& patch = boundaries->subDict(name);
-            const WallLayout layout = wallLayout(patch, [&] {
-                std::string why;
-                const WallLayout fromModel = layoutFromModel(name, patch, why);
-                notes.push_back(fmt::format("wall patch '{}': {}", name, why));
-                return fromModel;
-            });
-            const WallPatchParticles<D> generated = generateWallPatch<D>(patch, dx, layout, shapeDomain);
-            for (const std::string& note : generated.notes) notes.push_back(fmt::format("wall patch '{}': {}", name, note));
-            for (std::size_t k = 0; k < generated.positions.size(); ++k) {
-                if (!insideDomain<D>(generated.positions[k], lo, hi))
-                    throw FatalError(patch.where(), fmt::format("wall patch '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
-                                                                fmt::join(generated.positions[k], " "), fmt::join(lo, " "), fmt::join(hi, " ")));
-                allWalls.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k], generated.areas[k]);
-                patchOf.push_back(static_cast<int>(patchNames.size()));
-            }
-            patchNames.push_back(name);
-            if (generated.solid) solids.push_back(generated.solid);
+template <int D>
+GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomain<D>& lattice, WallLayoutFromModel<D>& layoutFromModel,
+                                const GenerationDomain<D>& shapeDomain, std::vector<std::string>& notes) {
+    GeneratedWalls<D> walls;
+    if (!boundaries) return walls;
+    for (const std::string& name : boundaries->keywords()) {
+        const Dictionary& patch = boundaries->subDict(name);
+        const WallLayout layout = wallLayout(patch, [&] {
+            std::string why;
+            const WallLayout fromModel = layoutFromModel(name, patch, why);
+            notes.push_back(fmt::format("wall patch '{}': {}", name, why));
+            return fromModel;
+        });
+        const WallPatchParticles<D> generated = generateWallPatch<D>(patch, lattice.dx, layout, shapeDomain);
+        for (const std::string& note : generated.notes) notes.push_back(fmt::format("wall patch '{}': {}", name, note));
+        for (std::size_t k = 0; k < generated.positions.size(); ++k) {
+            if (!insideDomain<D>(generated.positions[k], lattice.lo, lattice.hi))
+                throw FatalError(patch.where(),
+                                 fmt::format("wall patch '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
+                                             fmt::join(generated.positions[k], " "), fmt::join(lattice.lo, " "), fmt::join(lattice.hi, " ")));
+            walls.particles.add(generated.positions[k], generated.normals[k], generated.spacings[k], generated.layers[k], generated.areas[k]);
+            walls.patchOf.push_back(static_cast<int>(walls.patchNames.size()));
         }
+        walls.patchNames.push_back(name);
+        if (generated.solid) walls.solids.push_back(generated.solid);
     }
-    CellLinkedList<D> wallCells(lo, hi, dx);
-    wallCells.build(allWalls.positions);
-    if (boundaries) requireDistinctPatches(*boundaries, patchNames, patchOf, allWalls.positions, wallCells, dx);
+    return walls;
+}
 
-    // A fluid lattice point less than dx/2 from a wall particle overlaps the wall. Where every
-    // such particle belongs to a one-layer wall (its particles on the wall's surface) the point
-    // is moved out along their normals to dx/2 in front of them rather than dropped: on a curved
-    // wall dropping would remove a ring of fluid dx/2 thick and lower the water by it. Behind
-    // such a wall, or near a layered wall, it is dropped.
-    std::vector<bool> oneLayerPatch(patchNames.size(), true);
-    for (std::size_t j = 0; j < allWalls.layers.size(); ++j)
-        if (allWalls.layers[j] > 0) oneLayerPatch[static_cast<std::size_t>(patchOf[j])] = false;
-    const double clearance = 0.5 * dx * (1.0 - 1e-9);
-    const auto clearOfTheWalls = [&](Vec<D> x) -> std::optional<Vec<D>> {
+// A fluid lattice point less than dx/2 from a wall particle overlaps the wall. Where every such
+// particle belongs to a one-layer wall (its particles on the wall's surface) the point is moved
+// out along their normals to dx/2 in front of them rather than dropped: on a curved wall dropping
+// would remove a ring of fluid dx/2 thick and lower the water by it. Behind such a wall, or near
+// a layered wall, it is dropped.
+template <int D>
+class WallClearance {
+public:
+    WallClearance(const GeneratedWalls<D>& walls, const CellLinkedList<D>& wallCells, double dx)
+        : walls_(walls), wallCells_(wallCells), dx_(dx), clearance_(0.5 * dx * (1.0 - 1e-9)), oneLayerPatch_(walls.patchNames.size(), true) {
+        for (std::size_t j = 0; j < walls.particles.layers.size(); ++j)
+            if (walls.particles.layers[j] > 0) oneLayerPatch_[static_cast<std::size_t>(walls.patchOf[j])] = false;
+    }
+
+    // Where the point at x goes: moved clear of the walls, or nowhere (dropped).
+    std::optional<Vec<D>> operator()(Vec<D> x) const {
         for (int pass = 0; pass < D; ++pass) {  // a corner pushes along each of its walls in turn
             bool drop = false;
             double deepest = 0.0;
             Vec<D> push = Vec<D>::Zero();
-            wallCells.forEachNeighbour(x, clearance, [&](std::uint32_t j, const Vec<D>& fromWall, double) {
-                const double gap = fromWall.dot(allWalls.normals[j]);
-                if (!oneLayerPatch[static_cast<std::size_t>(patchOf[j])] || gap <= 0.0)
+            wallCells_.forEachNeighbour(x, clearance_, [&](std::uint32_t j, const Vec<D>& fromWall, double) {
+                const double gap = fromWall.dot(walls_.particles.normals[j]);
+                if (!oneLayerPatch_[static_cast<std::size_t>(walls_.patchOf[j])] || gap <= 0.0)
                     drop = true;
-                else if (0.5 * dx - gap > deepest) {
-                    deepest = 0.5 * dx - gap;
-                    push = deepest * allWalls.normals[j];
+                else if (0.5 * dx_ - gap > deepest) {
+                    deepest = 0.5 * dx_ - gap;
+                    push = deepest * walls_.particles.normals[j];
                 }
             });
             if (drop) return std::nullopt;
@@ -182,117 +195,188 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
             x += push;
         }
         bool overlaps = false;
-        wallCells.forEachNeighbour(x, clearance, [&](std::uint32_t, const Vec<D>&, double) { overlaps = true; });
+        wallCells_.forEachNeighbour(x, clearance_, [&](std::uint32_t, const Vec<D>&, double) { overlaps = true; });
         return overlaps ? std::nullopt : std::optional<Vec<D>>(x);
-    };
+    }
 
-    // Fluid regions.
-    std::vector<Vec<D>> fluidPositions, fluidVelocities;
+private:
+    const GeneratedWalls<D>& walls_;
+    const CellLinkedList<D>& wallCells_;
+    double dx_, clearance_;
+    std::vector<bool> oneLayerPatch_;
+};
+
+// The fluid regions' particles, in the order the regions are listed.
+template <int D>
+struct GeneratedFluid {
+    std::vector<Vec<D>> positions, velocities;
     std::vector<double> surfaceHeight;     // per particle: the top of its region along -g
     std::vector<double> initialPressures;  // per particle, with initialPressure analytic
-    const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
     std::size_t dropped = 0;
     std::vector<std::string> warnings;
+};
+
+template <int D>
+GeneratedFluid<D> fillFluid(const Dictionary& dict, const LatticeDomain<D>& lattice, const GeneratedWalls<D>& walls,
+                            const WallClearance<D>& clearOfTheWalls, const GenerationDomain<D>& shapeDomain, const std::string& initialPressure,
+                            const FluidProperties<D>& properties, std::vector<std::string>& notes) {
+    GeneratedFluid<D> out;
+    const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
     const Dictionary& fluid = dict.subDict("fluid");
     for (const std::string& name : fluid.keywords()) {
         const Dictionary& region = fluid.subDict(name);
-        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, dx, shapeDomain);
+        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, lattice.dx, shapeDomain);
         for (const std::string& note : filled.notes) notes.push_back(fmt::format("fluid region '{}': {}", name, note));
         double top = -std::numeric_limits<double>::infinity();
-        std::size_t first = fluidPositions.size();
+        std::size_t first = out.positions.size();
         for (const Vec<D>& latticePoint : filled.positions) {
-            if (!insideDomain<D>(latticePoint, lo, hi))
+            if (!insideDomain<D>(latticePoint, lattice.lo, lattice.hi))
                 throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
-                                                             fmt::join(latticePoint, " "), fmt::join(lo, " "), fmt::join(hi, " ")));
-            if (std::any_of(solids.begin(), solids.end(), [&](const auto& solid) { return solid(latticePoint); })) {
-                ++dropped;
-                continue;
-            }
-            const std::optional<Vec<D>> kept = clearOfTheWalls(latticePoint);
+                                                             fmt::join(latticePoint, " "), fmt::join(lattice.lo, " "), fmt::join(lattice.hi, " ")));
+            const bool inSolid = std::any_of(walls.solids.begin(), walls.solids.end(), [&](const auto& solid) { return solid(latticePoint); });
+            const std::optional<Vec<D>> kept = inSolid ? std::nullopt : clearOfTheWalls(latticePoint);
             if (!kept) {
-                ++dropped;
+                ++out.dropped;
                 continue;
             }
             const Vec<D> x = *kept;
-            fluidPositions.push_back(x);
-            fluidVelocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
+            out.positions.push_back(x);
+            out.velocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
             if (initialPressure == "analytic") {
                 if (!filled.initialField || !filled.initialField->hasPressure())
                     dict.fail("initialPressure",
                               fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
                                           "field (velocity {{ type taylorGreen; ... }}, say)",
                                           name));
-                initialPressures.push_back(filled.initialField->pressure(x, 0.0, {rho0, properties.gravity}));
+                out.initialPressures.push_back(filled.initialField->pressure(x, 0.0, {properties.rho0, properties.gravity}));
             }
-            top = std::max(top, x.dot(up) + 0.5 * dx);
+            top = std::max(top, x.dot(up) + 0.5 * lattice.dx);
         }
-        surfaceHeight.resize(fluidPositions.size(), top);
-        if (fluidPositions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
-        if (const std::string outside = outsideTheWalls(name, fluidPositions, first, allWalls.positions, periodic, dx); !outside.empty())
-            warnings.push_back(outside);
+        out.surfaceHeight.resize(out.positions.size(), top);
+        if (out.positions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
+        if (const std::string outside = outsideTheWalls(name, out.positions, first, walls.particles.positions, lattice.periodic, lattice.dx);
+            !outside.empty())
+            out.warnings.push_back(outside);
     }
+    return out;
+}
 
-    const auto densityFor = [&](double p) { return std::visit([&](const auto& eos) { return eos.density(eos.p0 + p); }, properties.eos); };
-    const auto hydrostaticPressure = [&](const Vec<D>& x, double top) { return rho0 * properties.gravity.norm() * (top - x.dot(up)); };
-    const auto fluidDensity = [&](std::size_t i) {
-        if (initialPressure == "analytic") return densityFor(initialPressures[i]);
-        if (initialPressure == "hydrostatic") return densityFor(hydrostaticPressure(fluidPositions[i], surfaceHeight[i]));
-        return rho0;
-    };
+// The initial state's density and pressure: uniform, hydrostatic below each region's top, or
+// from the analytic solution's pressure.
+template <int D>
+struct InitialState {
+    const FluidProperties<D>& properties;
+    std::string initialPressure;
 
+    double density(double p) const {
+        return std::visit([&](const auto& eos) { return eos.density(eos.p0 + p); }, properties.eos);
+    }
+    // The pressure the solver will take from the density, so that the initial state can be coloured by it.
+    double pressure(double rho) const {
+        return std::visit([&](const auto& eos) { return eos.pressure(rho); }, properties.eos);
+    }
+    double hydrostaticPressure(const Vec<D>& x, double top) const {
+        const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
+        return properties.rho0 * properties.gravity.norm() * (top - x.dot(up));
+    }
+};
+
+template <int D>
+ParticleSet<D> fluidParticleSet(const GeneratedFluid<D>& generated, const InitialState<D>& state, double dx) {
+    const double rho0 = state.properties.rho0;
     ParticleSet<D> fluidSet("fluid");
-    fluidSet.resize(fluidPositions.size());
+    fluidSet.resize(generated.positions.size());
     auto& velocity = fluidSet.addVector("velocity", Vec<D>::Zero());
     auto& density = fluidSet.addScalar("density", rho0);
-    // The pressure the solver will take from the density, so that the initial state can be coloured by it.
-    const auto pressureOf = [&](double rho) { return std::visit([&](const auto& eos) { return eos.pressure(rho); }, properties.eos); };
     auto& pressure = fluidSet.addScalar("pressure", 0.0);
-    fluidSet.addScalar("mass", rho0 * volume);
-    for (std::size_t i = 0; i < fluidPositions.size(); ++i) {
-        fluidSet.position[i] = fluidPositions[i];
+    fluidSet.addScalar("mass", rho0 * std::pow(dx, D));
+    for (std::size_t i = 0; i < generated.positions.size(); ++i) {
+        fluidSet.position[i] = generated.positions[i];
         fluidSet.globalId[i] = static_cast<std::int64_t>(i);
-        velocity[i] = fluidVelocities[i];
-        density[i] = fluidDensity(i);
-        pressure[i] = pressureOf(density[i]);
+        velocity[i] = generated.velocities[i];
+        if (state.initialPressure == "analytic")
+            density[i] = state.density(generated.initialPressures[i]);
+        else if (state.initialPressure == "hydrostatic")
+            density[i] = state.density(state.hydrostaticPressure(generated.positions[i], generated.surfaceHeight[i]));
+        else
+            density[i] = rho0;
+        pressure[i] = state.pressure(density[i]);
     }
+    return fluidSet;
+}
 
-    walls.resize(allWalls.positions.size());
+// Wall particles start at the hydrostatic pressure below the highest fluid surface (at least rho0).
+template <int D>
+ParticleSet<D> wallParticleSet(const GeneratedWalls<D>& generated, const InitialState<D>& state, double highestSurface, double dx) {
+    const double rho0 = state.properties.rho0;
+    const WallPatchParticles<D>& all = generated.particles;
+    ParticleSet<D> walls("walls");
+    walls.resize(all.positions.size());
     auto& normal = walls.addVector("normal", Vec<D>::Zero());
     auto& spacing = walls.addScalar("spacing", dx);
     auto& area = walls.addScalar("area", 0.0);
     auto& wallDensity = walls.addScalar("density", rho0);
     auto& wallPressure = walls.addScalar("pressure", 0.0);
-    walls.addScalar("mass", rho0 * volume);
+    walls.addScalar("mass", rho0 * std::pow(dx, D));
     auto& patch = walls.addInteger("patch", 0);
     auto& layer = walls.addInteger("layer", 0);
-    const double highestSurface = surfaceHeight.empty() ? 0.0 : *std::max_element(surfaceHeight.begin(), surfaceHeight.end());
-    for (std::size_t k = 0; k < allWalls.positions.size(); ++k) {
-        walls.position[k] = allWalls.positions[k];
+    for (std::size_t k = 0; k < all.positions.size(); ++k) {
+        walls.position[k] = all.positions[k];
         walls.globalId[k] = static_cast<std::int64_t>(k);
-        normal[k] = allWalls.normals[k];
-        spacing[k] = allWalls.spacings[k];
-        area[k] = allWalls.areas[k];
-        patch[k] = patchOf[k];
-        layer[k] = allWalls.layers[k];
-        wallDensity[k] =
-            initialPressure == "hydrostatic" ? std::max(rho0, densityFor(hydrostaticPressure(allWalls.positions[k], highestSurface))) : rho0;
-        wallPressure[k] = pressureOf(wallDensity[k]);
+        normal[k] = all.normals[k];
+        spacing[k] = all.spacings[k];
+        area[k] = all.areas[k];
+        patch[k] = generated.patchOf[k];
+        layer[k] = all.layers[k];
+        wallDensity[k] = state.initialPressure == "hydrostatic"
+                             ? std::max(rho0, state.density(state.hydrostaticPressure(all.positions[k], highestSurface)))
+                             : rho0;
+        wallPressure[k] = state.pressure(wallDensity[k]);
     }
+    return walls;
+}
+
+template <int D>
+GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory) {
+    const LatticeDomain<D> lattice = readLatticeDomain<D>(dict);
+    const double dx = lattice.dx;
+    const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
+    if (initialPressure != "none" && initialPressure != "hydrostatic" && initialPressure != "analytic")
+        dict.fail("initialPressure", "expected none, hydrostatic or analytic, found '" + initialPressure + "'");
+    const Dictionary fluidPropertiesDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
+    const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
+    const GenerationDomain<D> shapeDomain{lattice.lo, lattice.hi, caseDirectory};
+
+    // Walls first: fluid particles overlapping them are dropped.
+    std::vector<std::string> notes;
+    const Dictionary* boundaries = dict.findSubDict("boundaries");
+    WallLayoutFromModel<D> layoutFromModel(caseDirectory, dx, properties);
+    const GeneratedWalls<D> walls = generateWalls(boundaries, lattice, layoutFromModel, shapeDomain, notes);
+    CellLinkedList<D> wallCells(lattice.lo, lattice.hi, dx);
+    wallCells.build(walls.particles.positions);
+    if (boundaries) requireDistinctPatches(*boundaries, walls.patchNames, walls.patchOf, walls.particles.positions, wallCells, dx);
+    const GeneratedFluid<D> fluid =
+        fillFluid(dict, lattice, walls, WallClearance<D>(walls, wallCells, dx), shapeDomain, initialPressure, properties, notes);
+
+    const InitialState<D> state{properties, initialPressure};
+    const ParticleSet<D> fluidSet = fluidParticleSet(fluid, state, dx);
+    const double highestSurface = fluid.surfaceHeight.empty() ? 0.0 : *std::max_element(fluid.surfaceHeight.begin(), fluid.surfaceHeight.end());
+    const ParticleSet<D> wallSet = wallParticleSet(walls, state, highestSurface, dx);
 
     StateHeader header;
     header.dimension = D;
     header.spacing = dx;
-    header.domainMin.assign(lo.data(), lo.data() + D);
-    header.domainMax.assign(hi.data(), hi.data() + D);
-    header.periodic = periodic;
+    header.domainMin.assign(lattice.lo.data(), lattice.lo.data() + D);
+    header.domainMax.assign(lattice.hi.data(), lattice.hi.data() + D);
+    header.periodic = lattice.periodic;
     dict.checkUnused();
     std::filesystem::create_directories(outputDirectory);
     // Walls first: the solver takes a time directory with a fluid.vtu for a complete state.
     StateHeader wallHeader = header;
-    wallHeader.patchNames = patchNames;
-    writeParticleFile(outputDirectory / "walls.vtu", walls, wallHeader);
+    wallHeader.patchNames = walls.patchNames;
+    writeParticleFile(outputDirectory / "walls.vtu", wallSet, wallHeader);
     writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
-    return {D, fluidSet.size(), walls.size(), dropped, warnings, notes};
+    return {D, fluidSet.size(), wallSet.size(), fluid.dropped, fluid.warnings, notes};
 }
 
 }  // namespace

@@ -327,18 +327,43 @@ private:
         throw FatalError(token.where, "macro '" + token.text + "' refers to no entry defined before it in this or an enclosing dictionary");
     }
 
+    // A keyword followed by '{': a sub-dictionary.
+    void parseSubDictionary(Dictionary& target, const Token& keyword, const std::string& childName) {
+        if (nesting_ >= maxNestingDepth)
+            throw FatalError(tokens_[pos_].where, "dictionaries nested more than " + std::to_string(maxNestingDepth) + " deep");
+        auto child = std::make_shared<Dictionary>(childName, tokens_[pos_].where);
+        ++pos_;
+        ++nesting_;
+        parseBody(*child, false);
+        --nesting_;
+        target.add(Entry(keyword.text, keyword.where, child));
+    }
+
+    // A punctuation token in the value of `keyword`, checked against the lists still open:
+    // true at the ';' that ends the value.
+    static bool endsValue(const Token& token, const Token& keyword, std::vector<const Token*>& open) {
+        if (token.text == ";" && open.empty()) return true;
+        if (token.text == "(" || token.text == "[") open.push_back(&token);
+        if (token.text == ")" || token.text == "]") {
+            const char expected = token.text == ")" ? '(' : '[';
+            if (open.empty() || open.back()->text[0] != expected)
+                throw FatalError(token.where, "'" + token.text + "' has no matching '" + std::string(1, expected) + "'");
+            open.pop_back();
+        }
+        if (token.text == "{" || token.text == "}" || (token.text == ";" && !open.empty())) {
+            if (!open.empty())
+                throw FatalError(token.where, "found '" + token.text + "' inside the list opened at line " + std::to_string(open.back()->where.line) +
+                                                  "; is a ')' missing?");
+            throw FatalError(token.where, "found '" + token.text + "' in the value of '" + keyword.text + "'; is a ';' missing after it?");
+        }
+        return false;
+    }
+
     void parseEntry(Dictionary& target) {
         const Token& keyword = tokens_[pos_++];
         const std::string childName = target.name().empty() ? keyword.text : target.name() + "/" + keyword.text;
         if (pos_ < tokens_.size() && tokens_[pos_].kind == Token::Kind::Punctuation && tokens_[pos_].text == "{") {
-            if (nesting_ >= maxNestingDepth)
-                throw FatalError(tokens_[pos_].where, "dictionaries nested more than " + std::to_string(maxNestingDepth) + " deep");
-            auto child = std::make_shared<Dictionary>(childName, tokens_[pos_].where);
-            ++pos_;
-            ++nesting_;
-            parseBody(*child, false);
-            --nesting_;
-            target.add(Entry(keyword.text, keyword.where, child));
+            parseSubDictionary(target, keyword, childName);
             return;
         }
         std::vector<Token> value;
@@ -349,24 +374,9 @@ private:
                 throw FatalError(keyword.where, "entry '" + keyword.text + "' is not terminated by ';' before the end of the file");
             }
             const Token& token = tokens_[pos_];
-            if (token.kind == Token::Kind::Punctuation) {
-                if (token.text == ";" && open.empty()) {
-                    ++pos_;
-                    break;
-                }
-                if (token.text == "(" || token.text == "[") open.push_back(&token);
-                if (token.text == ")" || token.text == "]") {
-                    const char expected = token.text == ")" ? '(' : '[';
-                    if (open.empty() || open.back()->text[0] != expected)
-                        throw FatalError(token.where, "'" + token.text + "' has no matching '" + std::string(1, expected) + "'");
-                    open.pop_back();
-                }
-                if (token.text == "{" || token.text == "}" || (token.text == ";" && !open.empty())) {
-                    if (!open.empty())
-                        throw FatalError(token.where, "found '" + token.text + "' inside the list opened at line " +
-                                                          std::to_string(open.back()->where.line) + "; is a ')' missing?");
-                    throw FatalError(token.where, "found '" + token.text + "' in the value of '" + keyword.text + "'; is a ';' missing after it?");
-                }
+            if (token.kind == Token::Kind::Punctuation && endsValue(token, keyword, open)) {
+                ++pos_;
+                break;
             }
             if (token.kind == Token::Kind::Word && token.text.starts_with("$")) {
                 const Entry source = resolveMacro(token);  // a copy, as above

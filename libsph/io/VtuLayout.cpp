@@ -156,20 +156,42 @@ void checkStrings(const ArrayLayout& array, const std::string& where, const std:
         fail(where + " holds " + std::to_string(strings) + " strings, but NumberOfTuples says " + std::to_string(*array.values));
 }
 
-}  // namespace
-
-void checkVtuLayout(const std::filesystem::path& file) {
-    const LayoutError fail(file);
-    std::error_code ec;
-    const std::uint64_t fileSize = std::filesystem::file_size(file, ec);
-    if (ec) fail("cannot be read: " + ec.message());
-    const FileHeader header = readXmlPart(file, fileSize, fail);
-    const std::vector<XmlTag> tags = tagsOf(header.xml, fail);
-
+// What the XML part declares: the <VTKFile> tag, the number of pieces, and every data array.
+struct XmlLayout {
     const XmlTag* vtkFile = nullptr;
-    std::uint64_t points = 0, cells = 0, pieces = 0;
-    std::string section;
+    std::uint64_t pieces = 0;
     std::vector<ArrayLayout> arrays;
+};
+
+// A <DataArray> or <Array> in `section` of a piece of `points` points and `cells` cells.
+ArrayLayout arrayOf(const XmlTag& tag, const std::string& section, std::uint64_t points, std::uint64_t cells, const LayoutError& fail) {
+    ArrayLayout array;
+    array.name = tag.attributes.contains("Name") ? tag.attributes.at("Name") : "(unnamed)";
+    array.type = tag.attributes.contains("type") ? tag.attributes.at("type") : "";
+    array.section = section;
+    if (bytesOfType(array.type) == 0) fail("array '" + array.name + "' has type \"" + array.type + "\", not a VTK data type");
+    const std::string format = tag.attributes.contains("format") ? tag.attributes.at("format") : "";
+    if (format != "appended") fail("array '" + array.name + "' has format=\"" + format + "\"; sphkit reads appended raw data, as it writes it");
+    array.offset = countOf(tag, "offset", fail);
+    const std::uint64_t components = countOf(tag, "NumberOfComponents", fail, 1);
+    if (components == 0 || components > 1024)
+        fail("array '" + array.name + "' has NumberOfComponents=\"" + std::to_string(components) + "\" (valid: 1 to 1024)");
+    std::optional<std::uint64_t> tuples;
+    if (section == "FieldData") tuples = countOf(tag, "NumberOfTuples", fail);
+    if (section == "PointData" || section == "Points") tuples = points;
+    if (section == "CellData" || (section == "Cells" && array.name != "connectivity")) tuples = cells;
+    if (section == "Cells" && array.name == "connectivity") array.leastValues = cells;
+    if (tuples) {
+        if (*tuples > (std::uint64_t{1} << 40)) fail("array '" + array.name + "' claims " + std::to_string(*tuples) + " tuples");
+        array.values = *tuples * components;
+    }
+    return array;
+}
+
+XmlLayout layoutOf(const std::vector<XmlTag>& tags, const LayoutError& fail) {
+    XmlLayout layout;
+    std::uint64_t points = 0, cells = 0;
+    std::string section;
     // VTK's reader dereferences what it makes of an element it does not know (found by fuzzing:
     // <DataArrayy> in FieldData crashed it): only the elements of an unstructured grid pass.
     static const std::vector<std::string> elements{"VTKFile", "UnstructuredGrid", "FieldData", "Piece",        "PointData",      "CellData", "Points",
@@ -179,9 +201,9 @@ void checkVtuLayout(const std::filesystem::path& file) {
         if (std::find(elements.begin(), elements.end(), element) == elements.end())
             fail("has the XML element <" + tag.name + ">, which a VTK unstructured grid does not have");
         if (tag.name == "VTKFile") {
-            vtkFile = &tag;
+            layout.vtkFile = &tag;
         } else if (tag.name == "Piece") {
-            if (++pieces > 1) fail("has more than one <Piece>; sphkit writes one");
+            if (++layout.pieces > 1) fail("has more than one <Piece>; sphkit writes one");
             points = countOf(tag, "NumberOfPoints", fail);
             cells = countOf(tag, "NumberOfCells", fail);
         } else if (tag.name == "FieldData" || tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" || tag.name == "Cells") {
@@ -189,33 +211,107 @@ void checkVtuLayout(const std::filesystem::path& file) {
         } else if (tag.name.starts_with("/") && tag.name != "/DataArray" && tag.name != "/Array") {
             section.clear();
         } else if (tag.name == "DataArray" || tag.name == "Array") {
-            ArrayLayout array;
-            array.name = tag.attributes.contains("Name") ? tag.attributes.at("Name") : "(unnamed)";
-            array.type = tag.attributes.contains("type") ? tag.attributes.at("type") : "";
-            array.section = section;
-            if (bytesOfType(array.type) == 0) fail("array '" + array.name + "' has type \"" + array.type + "\", not a VTK data type");
-            const std::string format = tag.attributes.contains("format") ? tag.attributes.at("format") : "";
-            if (format != "appended")
-                fail("array '" + array.name + "' has format=\"" + format + "\"; sphkit reads appended raw data, as it writes it");
-            array.offset = countOf(tag, "offset", fail);
-            const std::uint64_t components = countOf(tag, "NumberOfComponents", fail, 1);
-            if (components == 0 || components > 1024)
-                fail("array '" + array.name + "' has NumberOfComponents=\"" + std::to_string(components) + "\" (valid: 1 to 1024)");
-            std::optional<std::uint64_t> tuples;
-            if (section == "FieldData") tuples = countOf(tag, "NumberOfTuples", fail);
-            if (section == "PointData" || section == "Points") tuples = points;
-            if (section == "CellData" || (section == "Cells" && array.name != "connectivity")) tuples = cells;
-            if (section == "Cells" && array.name == "connectivity") array.leastValues = cells;
-            if (tuples) {
-                if (*tuples > (std::uint64_t{1} << 40)) fail("array '" + array.name + "' claims " + std::to_string(*tuples) + " tuples");
-                array.values = *tuples * components;
-            }
-            arrays.push_back(std::move(array));
+            layout.arrays.push_back(arrayOf(tag, section, points, cells, fail));
         }
     }
+    return layout;
+}
+
+// The appended data: header words and bytes at offsets into it.
+class AppendedData {
+public:
+    AppendedData(const std::filesystem::path& file, std::uint64_t start, std::uint64_t fileSize, std::uint64_t word)
+        : in_(file, std::ios::binary), start_(start), bytes_(fileSize - start), word_(word) {}
+
+    std::uint64_t bytes() const { return bytes_; }
+    std::uint64_t word() const { return word_; }
+
+    // Reads `count` header words at `at` (false if past the end).
+    bool readWords(std::uint64_t at, std::uint64_t count, std::vector<std::uint64_t>& words) {
+        if (at > bytes_ || count > (bytes_ - at) / word_) return false;
+        words.assign(static_cast<std::size_t>(count), 0);
+        in_.seekg(static_cast<std::streamoff>(start_ + at));
+        for (std::uint64_t& w : words) {
+            std::uint64_t value = 0;
+            in_.read(reinterpret_cast<char*>(&value), static_cast<std::streamsize>(word_));
+            w = value;
+        }
+        return static_cast<bool>(in_);
+    }
+
+    // Reads `count` bytes at `at` (inside the file: checked before).
+    std::string readBytes(std::uint64_t at, std::uint64_t count) {
+        std::string data(static_cast<std::size_t>(count), '\0');
+        in_.seekg(static_cast<std::streamoff>(start_ + at));
+        in_.read(data.data(), static_cast<std::streamsize>(count));
+        return data;
+    }
+
+private:
+    std::ifstream in_;
+    std::uint64_t start_, bytes_, word_;
+};
+
+// Checks that an array's data lies in the file and holds what its header implies; returns its
+// uncompressed size in bytes.
+std::uint64_t checkArrayData(const ArrayLayout& array, AppendedData& data, bool compressed, const LayoutError& fail) {
+    const std::string where = "array '" + array.name + "' (offset " + std::to_string(array.offset) + ")";
+    const std::uint64_t word = data.word(), appendedBytes = data.bytes();
+    std::vector<std::uint64_t> words, sizes;
+    std::uint64_t dataStart = 0, stored = 0, uncompressed = 0, blockSize = 0;
+    if (!compressed) {
+        if (!data.readWords(array.offset, 1, words)) fail(where + " starts past the end of the file");
+        dataStart = array.offset + word;
+        stored = uncompressed = words[0];
+    } else {
+        if (!data.readWords(array.offset, 3, words)) fail(where + " starts past the end of the file");
+        const std::uint64_t blocks = words[0], lastBlock = words[2];
+        blockSize = words[1];
+        if (blocks > 0 && (blockSize == 0 || lastBlock > blockSize))
+            fail(where + " has a compression header of " + std::to_string(blocks) + " blocks of " + std::to_string(blockSize) + " bytes, the last " +
+                 std::to_string(lastBlock) + ": not a valid one");
+        if (!data.readWords(array.offset + 3 * word, blocks, sizes))
+            fail(where + " claims " + std::to_string(blocks) + " compressed blocks, more than the file holds");
+        dataStart = array.offset + (3 + blocks) * word;
+        for (std::uint64_t size : sizes) {
+            if (size > appendedBytes) fail(where + " has a compressed block of " + std::to_string(size) + " bytes, more than the file holds");
+            stored += size;
+        }
+        uncompressed = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastBlock == 0 ? blockSize : lastBlock);
+        // zlib compresses by at most about 1032:1 (deflate's longest match per 2 bits).
+        if (blocks > 0 && (blockSize > (std::uint64_t{1} << 40) || uncompressed / 1032 > stored + 64 * blocks))
+            fail(where + " claims " + std::to_string(uncompressed) + " bytes from " + std::to_string(stored) +
+                 " compressed ones, more than zlib can compress");
+    }
+    if (dataStart > appendedBytes || stored > appendedBytes - dataStart)
+        fail(where + " holds " + std::to_string(stored) + " bytes that run past the end of the file");
+    const std::uint64_t elementBytes = bytesOfType(array.type);
+    if (array.values && array.type != "String" && uncompressed != *array.values * elementBytes)
+        fail(where + " holds " + std::to_string(uncompressed) + " bytes, but the header implies " + std::to_string(*array.values) + " values of " +
+             std::to_string(elementBytes) + " bytes (" + array.section + ")");
+    // Found by fuzzing: a connectivity offset one byte out read as zero blocks, which VTK then
+    // read through a null buffer.
+    if (uncompressed % elementBytes != 0 || uncompressed / elementBytes < array.leastValues)
+        fail(where + " holds " + std::to_string(uncompressed) + " bytes, not a whole number of at least " + std::to_string(array.leastValues) +
+             " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
+    if (array.type == "String" && array.values) checkStrings(array, where, data.readBytes(dataStart, stored), sizes, blockSize, uncompressed, fail);
+    return uncompressed;
+}
+
+}  // namespace
+
+void checkVtuLayout(const std::filesystem::path& file) {
+    const LayoutError fail(file);
+    std::error_code ec;
+    const std::uint64_t fileSize = std::filesystem::file_size(file, ec);
+    if (ec) fail("cannot be read: " + ec.message());
+    const FileHeader header = readXmlPart(file, fileSize, fail);
+    const std::vector<XmlTag> tags = tagsOf(header.xml, fail);
+    const XmlLayout layout = layoutOf(tags, fail);
+    const XmlTag* vtkFile = layout.vtkFile;
     if (!vtkFile || !vtkFile->attributes.contains("type") || vtkFile->attributes.at("type") != "UnstructuredGrid")
         fail("is not a VTK XML UnstructuredGrid (<VTKFile type=\"UnstructuredGrid\"> not found)");
-    if (pieces == 0) fail("has no <Piece>");
+    if (layout.pieces == 0) fail("has no <Piece>");
     const auto attribute = [&](const std::string& name) {
         const auto found = vtkFile->attributes.find(name);
         return found == vtkFile->attributes.end() ? std::string() : found->second;
@@ -226,72 +322,10 @@ void checkVtuLayout(const std::filesystem::path& file) {
     const std::string compressor = attribute("compressor");
     if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
         fail("compressor=\"" + compressor + "\" (valid: vtkZLibDataCompressor, or none)");
-    const std::uint64_t word = headerType == "UInt64" ? 8 : 4;
 
-    std::ifstream in(file, std::ios::binary);
-    const std::uint64_t appendedBytes = fileSize - header.appendedStart;
-    // Reads `count` header words at `at` bytes into the appended data (false if past the end).
-    const auto readWords = [&](std::uint64_t at, std::uint64_t count, std::vector<std::uint64_t>& words) {
-        if (at > appendedBytes || count > (appendedBytes - at) / word) return false;
-        words.assign(static_cast<std::size_t>(count), 0);
-        in.seekg(static_cast<std::streamoff>(header.appendedStart + at));
-        for (std::uint64_t& w : words) {
-            std::uint64_t value = 0;
-            in.read(reinterpret_cast<char*>(&value), static_cast<std::streamsize>(word));
-            w = value;
-        }
-        return static_cast<bool>(in);
-    };
-    // Reads `bytes` bytes at `at` into the appended data (inside the file: checked before).
-    const auto readBytes = [&](std::uint64_t at, std::uint64_t bytes) {
-        std::string data(static_cast<std::size_t>(bytes), '\0');
-        in.seekg(static_cast<std::streamoff>(header.appendedStart + at));
-        in.read(data.data(), static_cast<std::streamsize>(bytes));
-        return data;
-    };
+    AppendedData data(file, header.appendedStart, fileSize, headerType == "UInt64" ? 8 : 4);
     double uncompressedTotal = 0.0;
-    for (const ArrayLayout& array : arrays) {
-        const std::string where = "array '" + array.name + "' (offset " + std::to_string(array.offset) + ")";
-        std::vector<std::uint64_t> words, sizes;
-        std::uint64_t dataStart = 0, stored = 0, uncompressed = 0, blockSize = 0;
-        if (compressor.empty()) {
-            if (!readWords(array.offset, 1, words)) fail(where + " starts past the end of the file");
-            dataStart = array.offset + word;
-            stored = uncompressed = words[0];
-        } else {
-            if (!readWords(array.offset, 3, words)) fail(where + " starts past the end of the file");
-            const std::uint64_t blocks = words[0], lastBlock = words[2];
-            blockSize = words[1];
-            if (blocks > 0 && (blockSize == 0 || lastBlock > blockSize))
-                fail(where + " has a compression header of " + std::to_string(blocks) + " blocks of " + std::to_string(blockSize) +
-                     " bytes, the last " + std::to_string(lastBlock) + ": not a valid one");
-            if (!readWords(array.offset + 3 * word, blocks, sizes))
-                fail(where + " claims " + std::to_string(blocks) + " compressed blocks, more than the file holds");
-            dataStart = array.offset + (3 + blocks) * word;
-            for (std::uint64_t size : sizes) {
-                if (size > appendedBytes) fail(where + " has a compressed block of " + std::to_string(size) + " bytes, more than the file holds");
-                stored += size;
-            }
-            uncompressed = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastBlock == 0 ? blockSize : lastBlock);
-            // zlib compresses by at most about 1032:1 (deflate's longest match per 2 bits).
-            if (blocks > 0 && (blockSize > (std::uint64_t{1} << 40) || uncompressed / 1032 > stored + 64 * blocks))
-                fail(where + " claims " + std::to_string(uncompressed) + " bytes from " + std::to_string(stored) +
-                     " compressed ones, more than zlib can compress");
-        }
-        if (dataStart > appendedBytes || stored > appendedBytes - dataStart)
-            fail(where + " holds " + std::to_string(stored) + " bytes that run past the end of the file");
-        const std::uint64_t elementBytes = bytesOfType(array.type);
-        if (array.values && array.type != "String" && uncompressed != *array.values * elementBytes)
-            fail(where + " holds " + std::to_string(uncompressed) + " bytes, but the header implies " + std::to_string(*array.values) +
-                 " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
-        // Found by fuzzing: a connectivity offset one byte out read as zero blocks, which VTK
-        // then read through a null buffer.
-        if (uncompressed % elementBytes != 0 || uncompressed / elementBytes < array.leastValues)
-            fail(where + " holds " + std::to_string(uncompressed) + " bytes, not a whole number of at least " + std::to_string(array.leastValues) +
-                 " values of " + std::to_string(elementBytes) + " bytes (" + array.section + ")");
-        if (array.type == "String" && array.values) checkStrings(array, where, readBytes(dataStart, stored), sizes, blockSize, uncompressed, fail);
-        uncompressedTotal += static_cast<double>(uncompressed);
-    }
+    for (const ArrayLayout& array : layout.arrays) uncompressedTotal += static_cast<double>(checkArrayData(array, data, !compressor.empty(), fail));
     requireMemory(2.0 * uncompressedTotal, "reading particle file '" + file.string() + "'");
 }
 

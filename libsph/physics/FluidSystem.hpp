@@ -9,8 +9,9 @@
 //   3. boundary     each wall-particle patch's model sets its particles' pressure, density,
 //                   velocity
 //   4. forces       pressure gradient, viscosity, gravity, continuity rate and density diffusion
-//                   over fluid-fluid and fluid-wall pairs, in one loop templated on the kernel,
-//                   viscosity, density diffusion and density formulation (one std::visit)
+//                   over fluid-fluid and fluid-wall pairs: a loop driver (FluidRates.tpp) templated
+//                   on the kernel, viscosity, density diffusion and density formulation (one
+//                   std::visit), calling the pair physics (FluidPairTerms.hpp, FluidWallPair.hpp)
 //   5. wall forces  repulsion and deficiency-correction patches add their accelerations; the
 //                   acceleration of stage 4 is kept as uncorrectedAcceleration when one of them
 //                   reads it

@@ -43,6 +43,195 @@ double smallestEigenvalue(const Eigen::Matrix<double, D, D>& m) {
     }
 }
 
+// What the shifting passes read and write, gathered once per step.
+template <int D>
+struct ShiftingViews {
+    const CellLinkedList<D>& cells;
+    const CellLinkedList<D>& wallCells;
+    const std::vector<Patch<D>>& patches;
+    ParticleShiftingScratch<D>& scratch;
+    std::size_t n;  // owned fluid particles
+    double radius, inverseWdx, dx;
+    FreeSurfaceMarrone2010 surface;
+    Vec<D>* x;
+    const Vec<D>* v;
+    const double* m;
+    double* rho;  // read by the sums, corrected by the shift
+    const double* wallMass;
+    const double* wallDensity;
+    const Vec<D>* wallNormal;
+    const double* wallArea;
+    bool oneLayerWalls, evolvesDensity;
+    Vec<D>* shift;
+    double* lambda;
+
+    // Every surface element of a one-layer wall near x (wall-force patches).
+    template <class Visit>
+    void forEachWallElement(const Vec<D>& at, Visit&& visit) const {
+        for (const Patch<D>& patch : patches)
+            if (patch.cells) patch.cells->forEachNeighbour(at, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) { visit(w, r, r2); });
+    }
+};
+
+// Pass 1's sums, per thread and in cell order: each fluid pair is visited once and adds to both
+// its particles, as the force loop does (CellOrderedFluid.hpp). Inside the parallel region.
+template <int D, class Kernel, class Law, class Wraps>
+void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, const Law& law, std::vector<typename ParticleShiftingScratch<D>::Sums>& mine,
+                      Wraps) {
+    using Matrix = Eigen::Matrix<double, D, D>;
+    const auto& cells = in.cells;
+    const std::size_t places = cells.pointCount();
+    const std::vector<double>& volume = in.scratch.volume;
+    std::vector<std::uint32_t> neighbours(64);
+    std::vector<double> unusedScratch;
+    auto stencilCell = std::numeric_limits<std::uint32_t>::max();
+    typename CellLinkedList<D>::StencilRanges stencil;
+    const double* const xs = places > 0 ? cells.sortedPosition(0).data() : nullptr;
+#pragma omp for schedule(static, 256)
+    for (std::size_t k = 0; k < places; ++k) {
+        if (cells.cellAt(k) != stencilCell) {
+            stencilCell = cells.cellAt(k);
+            stencil = cells.stencilRanges(cells.sortedPosition(k));
+        }
+        std::array<double, D> xk;
+        for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
+        const std::size_t i = cells.sortedIndex(k);
+        const std::size_t count = cells.template listWithin<1, Wraps::value>(stencil, xk, in.radius * in.radius, k + 1, neighbours, unusedScratch);
+        auto& atK = mine[k];
+        for (std::size_t q = 0; q < count; ++q) {
+            const std::size_t l = neighbours[q], j = cells.sortedIndex(l);
+            Vec<D> r;
+            for (int d = 0; d < D; ++d) r[d] = cells.template separation<Wraps::value>(xk[d] - xs[l * D + d], d);
+            const double distance = r.norm();
+            const Vec<D> Fr = kernel.gradientFactor(distance) * r;
+            const double weight = law.pairWeight(kernel.value(distance) * in.inverseWdx), densityDifference = in.rho[j] - in.rho[i];
+            const Matrix outer = Fr * r.transpose();
+            auto& atL = mine[l];
+            atK.moment.noalias() -= volume[j] * outer;
+            atL.moment.noalias() -= volume[i] * outer;
+            atK.gradient += volume[j] * Fr;
+            atL.gradient -= volume[i] * Fr;
+            atK.law += (weight * volume[j]) * Fr;
+            atL.law -= (weight * volume[i]) * Fr;
+            atK.densityDifferences += (densityDifference * volume[j]) * Fr;
+            atL.densityDifferences += (densityDifference * volume[i]) * Fr;
+        }
+    }  // implicit barrier: every pair is in
+}
+
+// Pass 1 completed per particle: the threads' sums added, the walls', then the renormalised
+// density gradient, lambda_i and, at a free-surface particle, its outward normal. Inside the
+// parallel region.
+template <int D, class Kernel, class Law>
+void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel, const Law& law, std::size_t team) {
+    using Matrix = Eigen::Matrix<double, D, D>;
+    const auto& cells = in.cells;
+    ParticleShiftingScratch<D>& scratch = in.scratch;
+    auto stencilCell = std::numeric_limits<std::uint32_t>::max();
+    typename CellLinkedList<D>::StencilRanges wallStencil;
+#pragma omp for schedule(static, 256)
+    for (std::size_t k = 0; k < cells.pointCount(); ++k) {
+        const std::size_t i = cells.sortedIndex(k);
+        if (i >= in.n) continue;
+        if (cells.cellAt(k) != stencilCell) {  // the wall list has the fluid list's grid
+            stencilCell = cells.cellAt(k);
+            wallStencil = in.wallCells.anyPointNear(stencilCell) ? in.wallCells.stencilRanges(cells.sortedPosition(k))
+                                                                 : typename CellLinkedList<D>::StencilRanges{};
+        }
+        typename ParticleShiftingScratch<D>::Sums total;
+        for (std::size_t t = 0; t < team; ++t) {
+            const auto& part = scratch.sumsOfThread[t][k];
+            total.moment += part.moment;
+            total.gradient += part.gradient;
+            total.law += part.law;
+            total.densityDifferences += part.densityDifferences;
+        }
+        Matrix& moment = total.moment;
+        Vec<D>& gradient = total.gradient;
+        Vec<D>& sum = total.law;
+        Vec<D>& densityDifferences = total.densityDifferences;
+        const Vec<D>& x = in.x[i];
+        in.wallCells.forEachNeighbour(wallStencil, x, in.radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+            const double distance = std::sqrt(r2), V = in.wallMass[w] / in.wallDensity[w];
+            const Vec<D> VFr = (V * kernel.gradientFactor(distance)) * r;
+            moment.noalias() -= VFr * r.transpose();
+            gradient += VFr;
+            sum += law.pairWeight(kernel.value(distance) * in.inverseWdx) * VFr;
+            densityDifferences += (in.wallDensity[w] - in.rho[i]) * VFr;
+            scratch.nearWall[i] = 1;
+        });
+        // Renormalised by the particles' own moment (exact for a linear field whatever the support holds).
+        scratch.densityGradient[i] = std::abs(moment.determinant()) > 0.1 ? Vec<D>(moment.inverse() * densityDifferences) : densityDifferences;
+        if (in.oneLayerWalls) {
+            double behindWall = 0.0;
+            in.forEachWallElement(x, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+                const double distance = std::sqrt(r2);
+                const double AW = in.wallArea[w] * kernel.value(distance);
+                behindWall += scratch.outsideFraction->element(distance, r.dot(in.wallNormal[w]), in.wallArea[w]);
+                moment.noalias() += (AW * r) * in.wallNormal[w].transpose();
+                gradient -= AW * in.wallNormal[w];
+                sum -= AW * in.wallNormal[w];
+                scratch.nearWall[i] = 1;
+            });
+            moment += behindWall * Matrix::Identity();
+        }
+        in.lambda[i] = smallestEigenvalue<D>(0.5 * (moment + moment.transpose()));
+        scratch.outward[i] = Vec<D>::Zero();  // read only at free-surface particles
+        if (in.lambda[i] < in.surface.surfaceLambda) {
+            const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
+            if (const double length = inward.norm(); length > 1e-12) scratch.outward[i] = -inward / length;
+        }
+        scratch.law[i] = sum;
+    }
+}
+
+// Near the surface a particle's own normal is noise (its sums are nearly complete): each takes
+// the kernel-weighted mean of the free-surface particles' normals around it. Free-surface
+// particles are few: serial.
+template <int D, class Kernel>
+void spreadSurfaceNormals(const ShiftingViews<D>& in, const Kernel& kernel) {
+    ParticleShiftingScratch<D>& scratch = in.scratch;
+    for (std::size_t i = 0; i < in.n; ++i) {
+        if (in.lambda[i] >= in.surface.surfaceLambda) continue;
+        in.cells.forEachNeighbour(in.x[i], in.radius, [&](std::uint32_t j, const Vec<D>&, double r2) {
+            if (j < in.n) scratch.surfaceNormal[j] += kernel.value(std::sqrt(r2)) * scratch.outward[i];
+        });
+    }
+}
+
+// Pass 3: the law's velocity, its component along the surface normal and towards a wall
+// removed, bounded; then the move and the density's Taylor term.
+template <int D, class Law>
+void applyShift(const ShiftingViews<D>& in, const Law& law, double dt, double maxSpeed) {
+    const ParticleShiftingScratch<D>& scratch = in.scratch;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < in.n; ++i) {
+        in.shift[i] = Vec<D>::Zero();
+        if (in.lambda[i] < in.surface.splashLambda) continue;
+        const double speed = in.v[i].norm();
+        Vec<D> u = -law.scale(speed, maxSpeed) * scratch.law[i];
+        if (const double length = scratch.surfaceNormal[i].norm(); length > 0.0) {
+            const Vec<D> normal = scratch.surfaceNormal[i] / length;
+            u -= u.dot(normal) * normal;
+        }
+        if (scratch.nearWall[i]) {
+            const auto awayFromWall = [&](std::uint32_t w, const Vec<D>&, double) {
+                const double towards = u.dot(in.wallNormal[w]);
+                if (towards < 0.0) u -= towards * in.wallNormal[w];
+            };
+            // Layers of wall particles complete the sums: only a particle nearer than the
+            // spacing to one of them is kept from coming nearer still.
+            in.wallCells.forEachNeighbour(in.x[i], in.dx, awayFromWall);
+            in.forEachWallElement(in.x[i], awayFromWall);
+        }
+        const double bound = law.speedBound(speed, maxSpeed), magnitude = u.norm();
+        if (magnitude > bound) u *= bound / magnitude;
+        in.shift[i] = u;
+        in.x[i] += dt * u;
+        if (in.evolvesDensity) in.rho[i] += dt * u.dot(scratch.densityGradient[i]);
+    }
+}
+
 }  // namespace
 
 template <int D>
@@ -63,191 +252,57 @@ void FluidSystem<D>::shiftParticles(double dt) {
             } else if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
                 throw std::logic_error(pairLoopsNotCompiled);
             } else {
-                using Matrix = Eigen::Matrix<double, D, D>;
-                const double radius = supportRadius_;
-                const double inverseWdx = 1.0 / kernel.value(models_.shifting.dx);
-                const FreeSurfaceMarrone2010 surface = models_.shifting.surface;
-                const double* m = fluid.scalar("mass").data();
-                const double* rho = fluid.scalar("density").data();
+                const auto& cells = fluidCells_;
                 const bool anyWalls = walls.size() > 0;
-                const double* wallMass = anyWalls ? walls.scalar("mass").data() : nullptr;
-                const double* wallDensity = anyWalls ? walls.scalar("density").data() : nullptr;
-                const Vec<D>* wallNormal = anyWalls ? walls.vector("normal").data() : nullptr;
                 const double* wallArea = anyWalls && walls.hasScalar("area") ? walls.scalar("area").data() : nullptr;
                 const bool oneLayerWalls =
                     wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
                 ParticleShiftingScratch<D>& scratch = shiftingScratch_;
                 // Its table depends on the kernel alone: built at the first step that needs it.
                 if (oneLayerWalls && !scratch.outsideFraction) scratch.outsideFraction.emplace(kernel);
-                Vec<D>* shift = fluid.vector("shiftingVelocity").data();
-                const bool evolvesDensity = continuity();
-                double* density = fluid.scalar("density").data();
-                const auto& cells = fluidCells_;
                 scratch.volume.resize(cells.pointCount());
                 scratch.outward.resize(n);
                 scratch.law.resize(n);
                 scratch.densityGradient.resize(n);
                 scratch.surfaceNormal.assign(n, Vec<D>::Zero());
                 scratch.nearWall.assign(n, 0);
-                std::vector<double>& volume = scratch.volume;
-                std::vector<Vec<D>>& outward = scratch.outward;
-                std::vector<Vec<D>>& lawSum = scratch.law;
-                std::vector<Vec<D>>& surfaceNormal = scratch.surfaceNormal;
-                std::vector<Vec<D>>& densityGradient = scratch.densityGradient;
-                std::vector<char>& nearWall = scratch.nearWall;
-                double* lambda = fluid.scalar("freeSurfaceLambda").data();
+                const ShiftingViews<D> in{cells,
+                                          wallCells_,
+                                          patches,
+                                          scratch,
+                                          n,
+                                          supportRadius_,
+                                          1.0 / kernel.value(models_.shifting.dx),
+                                          models_.shifting.dx,
+                                          models_.shifting.surface,
+                                          fluid.position.data(),
+                                          v,
+                                          fluid.scalar("mass").data(),
+                                          fluid.scalar("density").data(),
+                                          anyWalls ? walls.scalar("mass").data() : nullptr,
+                                          anyWalls ? walls.scalar("density").data() : nullptr,
+                                          anyWalls ? walls.vector("normal").data() : nullptr,
+                                          wallArea,
+                                          oneLayerWalls,
+                                          continuity(),
+                                          fluid.vector("shiftingVelocity").data(),
+                                          fluid.scalar("freeSurfaceLambda").data()};
 #pragma omp parallel for schedule(static)
-                for (std::size_t j = 0; j < volume.size(); ++j) volume[j] = m[j] / rho[j];
-                // Every surface element of a one-layer wall near x (wall-force patches).
-                const auto forEachWallElement = [&](const Vec<D>& x, auto&& visit) {
-                    for (const Patch<D>& patch : patches)
-                        if (patch.cells)
-                            patch.cells->forEachNeighbour(x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) { visit(w, r, r2); });
-                };
-                // Pass 1's sums, per thread and in cell order: each fluid pair is visited once and
-                // adds to both its particles, as the force loop does (CellOrderedFluid.hpp).
-                using Sums = typename ParticleShiftingScratch<D>::Sums;
-                const std::size_t places = cells.pointCount();
-                auto& sumsOfThread = scratch.sumsOfThread;
+                for (std::size_t j = 0; j < cells.pointCount(); ++j) in.scratch.volume[j] = in.m[j] / in.rho[j];
+                auto& sumsOfThread = in.scratch.sumsOfThread;
                 sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel
                 {
-                    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-                    std::vector<Sums>& mine = sumsOfThread[static_cast<std::size_t>(omp_get_thread_num())];
-                    mine.assign(places, Sums{});
-                    std::vector<std::uint32_t> neighbours(64);
-                    std::vector<double> unusedScratch;
-                    auto stencilCell = std::numeric_limits<std::uint32_t>::max();
-                    typename CellLinkedList<D>::StencilRanges stencil, wallStencil;
-                    const double* const xs = places > 0 ? cells.sortedPosition(0).data() : nullptr;
-                    const auto fluidPairs = [&](auto wraps) {
-#pragma omp for schedule(static, 256)
-                        for (std::size_t k = 0; k < places; ++k) {
-                            if (cells.cellAt(k) != stencilCell) {
-                                stencilCell = cells.cellAt(k);
-                                stencil = cells.stencilRanges(cells.sortedPosition(k));
-                            }
-                            std::array<double, D> xk;
-                            for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
-                            const std::size_t i = cells.sortedIndex(k);
-                            const std::size_t count =
-                                cells.template listWithin<1, decltype(wraps)::value>(stencil, xk, radius * radius, k + 1, neighbours, unusedScratch);
-                            Sums& atK = mine[k];
-                            for (std::size_t q = 0; q < count; ++q) {
-                                const std::size_t l = neighbours[q], j = cells.sortedIndex(l);
-                                Vec<D> r;
-                                for (int d = 0; d < D; ++d) r[d] = cells.template separation<decltype(wraps)::value>(xk[d] - xs[l * D + d], d);
-                                const double distance = r.norm();
-                                const Vec<D> Fr = kernel.gradientFactor(distance) * r;
-                                const double weight = law.pairWeight(kernel.value(distance) * inverseWdx), densityDifference = rho[j] - rho[i];
-                                const Matrix outer = Fr * r.transpose();
-                                Sums& atL = mine[l];
-                                atK.moment.noalias() -= volume[j] * outer;
-                                atL.moment.noalias() -= volume[i] * outer;
-                                atK.gradient += volume[j] * Fr;
-                                atL.gradient -= volume[i] * Fr;
-                                atK.law += (weight * volume[j]) * Fr;
-                                atL.law -= (weight * volume[i]) * Fr;
-                                atK.densityDifferences += (densityDifference * volume[j]) * Fr;
-                                atL.densityDifferences += (densityDifference * volume[i]) * Fr;
-                            }
-                        }  // implicit barrier: every pair is in
-                    };
+                    auto& mine = sumsOfThread[static_cast<std::size_t>(omp_get_thread_num())];
+                    mine.assign(cells.pointCount(), typename ParticleShiftingScratch<D>::Sums{});
                     if (cells.anyPeriodic())
-                        fluidPairs(std::true_type{});
+                        sumShiftingPairs(in, kernel, law, mine, std::true_type{});
                     else
-                        fluidPairs(std::false_type{});
-                    stencilCell = std::numeric_limits<std::uint32_t>::max();
-#pragma omp for schedule(static, 256)
-                    for (std::size_t k = 0; k < places; ++k) {
-                        const std::size_t i = cells.sortedIndex(k);
-                        if (i >= n) continue;
-                        if (cells.cellAt(k) != stencilCell) {  // the wall list has the fluid list's grid
-                            stencilCell = cells.cellAt(k);
-                            wallStencil = wallCells_.anyPointNear(stencilCell) ? wallCells_.stencilRanges(cells.sortedPosition(k))
-                                                                               : typename CellLinkedList<D>::StencilRanges{};
-                        }
-                        Sums total;
-                        for (std::size_t t = 0; t < team; ++t) {
-                            const Sums& part = sumsOfThread[t][k];
-                            total.moment += part.moment;
-                            total.gradient += part.gradient;
-                            total.law += part.law;
-                            total.densityDifferences += part.densityDifferences;
-                        }
-                        Matrix& moment = total.moment;
-                        Vec<D>& gradient = total.gradient;
-                        Vec<D>& sum = total.law;
-                        Vec<D>& densityDifferences = total.densityDifferences;
-                        const Vec<D>& x = fluid.position[i];
-                        wallCells_.forEachNeighbour(wallStencil, x, radius, [&](std::uint32_t w, const Vec<D>& r, double r2) {
-                            const double distance = std::sqrt(r2), V = wallMass[w] / wallDensity[w];
-                            const Vec<D> VFr = (V * kernel.gradientFactor(distance)) * r;
-                            moment.noalias() -= VFr * r.transpose();
-                            gradient += VFr;
-                            sum += law.pairWeight(kernel.value(distance) * inverseWdx) * VFr;
-                            densityDifferences += (wallDensity[w] - rho[i]) * VFr;
-                            nearWall[i] = 1;
-                        });
-                        // Renormalised by the particles' own moment (exact for a linear field whatever the support holds).
-                        densityGradient[i] =
-                            std::abs(moment.determinant()) > 0.1 ? Vec<D>(moment.inverse() * densityDifferences) : densityDifferences;
-                        if (oneLayerWalls) {
-                            double behindWall = 0.0;
-                            forEachWallElement(x, [&](std::uint32_t w, const Vec<D>& r, double r2) {
-                                const double distance = std::sqrt(r2);
-                                const double AW = wallArea[w] * kernel.value(distance);
-                                behindWall += scratch.outsideFraction->element(distance, r.dot(wallNormal[w]), wallArea[w]);
-                                moment.noalias() += (AW * r) * wallNormal[w].transpose();
-                                gradient -= AW * wallNormal[w];
-                                sum -= AW * wallNormal[w];
-                                nearWall[i] = 1;
-                            });
-                            moment += behindWall * Matrix::Identity();
-                        }
-                        lambda[i] = smallestEigenvalue<D>(0.5 * (moment + moment.transpose()));
-                        outward[i] = Vec<D>::Zero();  // read only at free-surface particles
-                        if (lambda[i] < surface.surfaceLambda) {
-                            const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
-                            if (const double length = inward.norm(); length > 1e-12) outward[i] = -inward / length;
-                        }
-                        lawSum[i] = sum;
-                    }
+                        sumShiftingPairs(in, kernel, law, mine, std::false_type{});
+                    completeShiftingSums(in, kernel, law, static_cast<std::size_t>(omp_get_num_threads()));
                 }
-                // Near the surface a particle's own normal is noise (its sums are nearly complete):
-                // each takes the kernel-weighted mean of the free-surface particles' normals around it.
-                for (std::size_t i = 0; i < n; ++i) {
-                    if (lambda[i] >= surface.surfaceLambda) continue;
-                    cells.forEachNeighbour(fluid.position[i], radius, [&](std::uint32_t j, const Vec<D>&, double r2) {
-                        if (j < n) surfaceNormal[j] += kernel.value(std::sqrt(r2)) * outward[i];
-                    });
-                }
-#pragma omp parallel for schedule(static)
-                for (std::size_t i = 0; i < n; ++i) {
-                    shift[i] = Vec<D>::Zero();
-                    if (lambda[i] < surface.splashLambda) continue;
-                    const double speed = v[i].norm();
-                    Vec<D> u = -law.scale(speed, maxSpeed) * lawSum[i];
-                    if (const double length = surfaceNormal[i].norm(); length > 0.0) {
-                        const Vec<D> normal = surfaceNormal[i] / length;
-                        u -= u.dot(normal) * normal;
-                    }
-                    if (nearWall[i]) {
-                        const auto awayFromWall = [&](std::uint32_t w, const Vec<D>&, double) {
-                            const double towards = u.dot(wallNormal[w]);
-                            if (towards < 0.0) u -= towards * wallNormal[w];
-                        };
-                        // Layers of wall particles complete the sums: only a particle nearer than
-                        // the spacing to one of them is kept from coming nearer still.
-                        wallCells_.forEachNeighbour(fluid.position[i], models_.shifting.dx, awayFromWall);
-                        forEachWallElement(fluid.position[i], awayFromWall);
-                    }
-                    const double bound = law.speedBound(speed, maxSpeed), magnitude = u.norm();
-                    if (magnitude > bound) u *= bound / magnitude;
-                    shift[i] = u;
-                    fluid.position[i] += dt * u;
-                    if (evolvesDensity) density[i] += dt * u.dot(densityGradient[i]);
-                }
+                spreadSurfaceNormals(in, kernel);
+                applyShift(in, law, dt, maxSpeed);
             }
         },
         models_.kernel, models_.shifting.law);

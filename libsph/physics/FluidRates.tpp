@@ -1,0 +1,402 @@
+// The loop driver of the fluid's rates: threads, cell order, vector lanes and accumulators,
+// calling the pair physics of FluidPairTerms.hpp and FluidWallPair.hpp. Included by
+// FluidSystem.tpp; one instantiation per kernel x viscosity x diffusion x terms.
+//
+// Fluid-fluid pairs are evaluated once each, in cell order: the inputs a pair reads are copied
+// into that order, chunks of it are dealt to the threads in turn (balanced where work gathers
+// near walls, and the same for a given thread count, so a run is reproducible), and a thread
+// adds to both particles of a pair in its own accumulator; a second pass sums the accumulators,
+// adds gravity and the fluid-wall terms, and writes the rates in storage order. Summation order
+// depends on the thread count (rates agree to round-off, not bit for bit).
+#include "physics/FluidPairTerms.hpp"
+
+#include <Eigen/LU>  // delta-SPH's renormalisation matrix
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <omp.h>
+#include <type_traits>
+#include <vector>
+
+namespace sph {
+namespace {
+
+template <int D, class Terms, class Kernel, class Viscosity, class Diffusion>
+class FluidRatesLoop {
+public:
+    using Stencil = typename CellLinkedList<D>::StencilRanges;
+    // Pairs in vector lanes (AVX2: four doubles) where a particle has many: 87 pairs in the 3D
+    // benchmark. With 12 (2D), the loop over them in lanes, its padding and the separate scatter
+    // cost more than one fused scalar loop, which 2D keeps (doc/performance.md, "Pairs in vector
+    // lanes (3D)").
+    static constexpr std::size_t lanes = D == 3 ? 4 : 1;
+    static constexpr std::size_t chunk = 256;
+
+    // Sizes the cell-ordered copies and accumulators; call before the parallel region.
+    FluidRatesLoop(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, Viscosity viscosity, Diffusion diffusion, const Vec<D>& gravity)
+        : cells_(s.fluidCells()), wallCells_(s.wallCells()), ordered_(ordered), kernel_(kernel), pair_{viscosity, diffusion, gravity, {}} {
+        n_ = cells_.pointCount();
+        owned_ = s.fluid.ownedCount();
+        x_ = s.fluid.position.data();
+        v_ = s.fluid.vector("velocity").data();
+        m_ = s.fluid.scalar("mass").data();
+        rho_ = s.fluid.scalar("density").data();
+        p_ = s.fluid.scalar("pressure").data();
+        a_ = s.fluid.vector("acceleration").data();
+        drho_ = Terms::continuity ? s.fluid.scalar("densityRate").data() : nullptr;
+        bodyForce_ = Terms::pressure ? gravity : Vec<D>::Zero();
+        wallVelocity_ = s.walls.vector("velocity").data();
+        wall_ = {s.walls.scalar("mass").data(), s.walls.scalar("pressure").data(), s.walls.scalar("density").data(),
+                 Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr};
+        radius_ = s.supportRadius();
+        eta2_ = viscousRegularisation(s.smoothingLength());
+        const auto threads = static_cast<std::size_t>(omp_get_max_threads());
+        ordered.mass.resize(n_);
+        if constexpr (Terms::pressure) ordered.pressureOverDensity2.resize(n_);
+        if constexpr (Terms::readsVelocity) ordered.velocity.resize(n_);
+        if constexpr (Terms::readsDensity) ordered.density.resize(n_);
+        if constexpr (Terms::diffuses) ordered.volume.resize(n_);
+        if constexpr (Terms::densityGradient) ordered.densityGradient.resize(n_);
+        ordered.acceleration.resize(threads);
+        if constexpr (Terms::densityRate) ordered.densityRate.resize(threads);
+        pair_.in = {ordered.mass.data(), ordered.pressureOverDensity2.data(), ordered.density.data(), ordered.volume.data(),
+                    Terms::densityGradient && n_ > 0 ? ordered.densityGradient.data()->data() : nullptr};
+    }
+
+    // Inside the parallel region, on each thread's own copy of the loop (the compiler then knows
+    // that no store in the pair loop changes the models, and hoists their case-wide branches).
+    void run() {
+        startThread();
+        copyIntoCellOrder();
+        if constexpr (Terms::densityGradient) withWraps([this](auto wraps) { densityGradients(wraps); });
+        withWraps([this](auto wraps) { fluidPairs(wraps); });
+#pragma omp barrier
+        // The scalar pass's forEachNeighbour takes the nearest image itself: one version is enough.
+        if constexpr (lanes == 1)
+            sumWithWallTerms(std::false_type{});
+        else
+            withWraps([this](auto wraps) { sumWithWallTerms(wraps); });
+    }
+
+private:
+    // The loops over pairs come in two versions, chosen once per evaluation: without periodic
+    // directions (wraps is std::false_type) a separation costs three instructions fewer per
+    // direction (doc/performance.md, "Separations without the nearest-image term"). The wall list
+    // has the same grid.
+    template <class Loop>
+    void withWraps(Loop&& loop) {
+        if (cells_.anyPeriodic())
+            loop(std::true_type{});
+        else
+            loop(std::false_type{});
+    }
+
+    void startThread() {
+        thread_ = static_cast<std::size_t>(omp_get_thread_num());
+        team_ = static_cast<std::size_t>(omp_get_num_threads());
+        neighbours_.resize(64);
+        // In lanes only: what the listed neighbours receive, and the candidates' squared distances.
+        toNeighbour_.resize(lanes > 1 ? neighbours_.size() * (D + 1) : 0);
+        distance2_.resize(lanes > 1 ? 64 : 0);
+        std::vector<Vec<D>>& accelerationOfThread = ordered_.acceleration[thread_];
+        accelerationOfThread.assign(n_, Vec<D>::Zero());
+        accelerations_ = accelerationOfThread.data()->data();
+        if constexpr (Terms::densityRate) {
+            ordered_.densityRate[thread_].assign(n_, 0.0);
+            densityRates_ = ordered_.densityRate[thread_].data();
+        }
+    }
+
+    void copyIntoCellOrder() {
+        double* const mass = ordered_.mass.data();
+        double* const pressureOverDensity2 = ordered_.pressureOverDensity2.data();
+        Vec<D>* const velocity = ordered_.velocity.data();
+        double* const density = ordered_.density.data();
+        double* const volume = ordered_.volume.data();
+#pragma omp for schedule(static)
+        for (std::size_t k = 0; k < n_; ++k) {
+            const std::size_t i = cells_.sortedIndex(k);
+            mass[k] = m_[i];
+            if constexpr (Terms::pressure) pressureOverDensity2[k] = p_[i] / (rho_[i] * rho_[i]);
+            if constexpr (Terms::readsVelocity) velocity[k] = v_[i];
+            if constexpr (Terms::readsDensity) density[k] = rho_[i];
+            if constexpr (Terms::diffuses) volume[k] = m_[i] / rho_[i];
+        }  // implicit barrier: the copies are complete
+    }
+
+    // The stencil of sorted place k's cell: the particles of a cell share it.
+    const Stencil& fluidStencil(std::size_t k) {
+        if (cells_.cellAt(k) != stencilCell_) {
+            stencilCell_ = cells_.cellAt(k);
+            stencil_ = cells_.stencilRanges(cells_.sortedPosition(k));
+        }
+        return stencil_;
+    }
+
+    // Lists the neighbours of x in neighbours_; in lanes, with room for what they receive.
+    template <bool Wraps>
+    std::size_t listNeighbours(const CellLinkedList<D>& list, const Stencil& around, const std::array<double, D>& x, std::size_t first) {
+        const std::size_t count = list.template listWithin<lanes, Wraps>(around, x, radius_ * radius_, first, neighbours_, distance2_);
+        if constexpr (lanes > 1)
+            if (toNeighbour_.size() < neighbours_.size() * (D + 1)) toNeighbour_.resize(neighbours_.size() * (D + 1));
+        return count;
+    }
+
+    std::array<double, D> sortedPosition(std::size_t k) const {
+        std::array<double, D> x;
+        for (int d = 0; d < D; ++d) x[d] = cells_.sortedPosition(k)[d];
+        return x;
+    }
+
+    // The renormalised density gradients (Antuono2010.hpp), before any pair reads them.
+    template <class Wraps>
+    void densityGradients(Wraps) {
+        const double* const volume = ordered_.volume.data();
+        const double* const density = ordered_.density.data();
+        double* const gradients = ordered_.densityGradient.data()->data();
+        const Kernel kernel = kernel_;
+#pragma omp for schedule(static, chunk)
+        for (std::size_t k = 0; k < n_; ++k) {
+            const std::array<double, D> xk = sortedPosition(k);
+            const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, 0);
+            Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
+            Vec<D> sum = Vec<D>::Zero();
+            for (std::size_t q = 0; q < count; ++q) {
+                const std::size_t l = neighbours_[q];
+                Vec<D> r;
+                for (int d = 0; d < D; ++d) r[d] = cells_.template separation<Wraps::value>(xk[d] - cells_.sortedPosition(l)[d], d);
+                const double VF = volume[l] * kernel.gradientFactor(r.norm());
+                moment.noalias() -= (VF * r) * r.transpose();
+                sum += ((density[l] - density[k]) * VF) * r;
+            }
+            const Vec<D> gradient = moment.determinant() > 0.1 ? Vec<D>(moment.inverse() * sum) : sum;
+            for (int d = 0; d < D; ++d) gradients[k * D + d] = gradient[d];
+        }  // implicit barrier: every gradient is in place
+    }
+
+    // Every fluid-fluid pair once: k with its later neighbours in cell order.
+    template <class Wraps>
+    void fluidPairs(Wraps) {
+        const Kernel kernel = kernel_;
+        const FluidPairTerms<D, Terms, Viscosity, Diffusion> pair = pair_;
+        const double eta2 = eta2_;
+        const double* const mass = pair.in.mass;
+        const double* const xs = n_ > 0 ? cells_.sortedPosition(0).data() : nullptr;  // Vec<D>: D consecutive doubles
+        const double* const vs = Terms::readsVelocity && n_ > 0 ? ordered_.velocity[0].data() : nullptr;
+        double* const as = accelerations_;
+        [[maybe_unused]] double* const drhoK = densityRates_;
+#pragma omp for schedule(static, chunk) nowait
+        for (std::size_t k = 0; k < n_; ++k) {
+            const std::array<double, D> xk = sortedPosition(k);
+            std::array<double, D> vk{};
+            if constexpr (Terms::readsVelocity)
+                for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
+            const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, k + 1);  // the later neighbours
+            // In lanes, what k receives is summed in registers and what each neighbour receives
+            // is stored beside it and added after the loop (a scatter inside the loop would keep
+            // it from vectorising). The list is padded to whole vectors with k itself at weight 0
+            // (every term is proportional to F, which is finite at r = 0), so that no pair is left
+            // to a scalar remainder loop.
+            const std::size_t padded = (count + lanes - 1) / lanes * lanes;
+            for (std::size_t q = count; q < padded; ++q) neighbours_[q] = static_cast<std::uint32_t>(k);
+            const std::uint32_t* listed = neighbours_.data();
+            [[maybe_unused]] const std::size_t stride = neighbours_.size();
+            [[maybe_unused]] double* const toL = toNeighbour_.data();  // D components of acceleration, then the density rate
+            const PairParticle<D> particleK = pair.particle(k);
+            double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateK = 0.0;
+#pragma omp simd reduction(+ : a0, a1, a2, densityRateK) if (simd : lanes > 1)
+            for (std::size_t q = 0; q < padded; ++q) {
+                const std::size_t l = listed[q];
+                double r[D], vkl[D];
+                double r2 = 0.0, vDotR = 0.0;
+#pragma GCC unroll 3
+                for (int d = 0; d < D; ++d) {
+                    r[d] = cells_.template separation<Wraps::value>(xk[d] - xs[l * D + d], d);
+                    r2 += r[d] * r[d];
+                    vkl[d] = 0.0;
+                    if constexpr (Terms::readsVelocity) {
+                        vkl[d] = vk[d] - vs[l * D + d];
+                        vDotR += vkl[d] * r[d];
+                    }
+                }
+                const double F = (lanes == 1 || q < count ? 1.0 : 0.0) * kernel.gradientFactor(std::sqrt(r2));
+                const double inverseRegularisedR2 = 1.0 / (r2 + eta2);
+                double alongR, alongV;
+                pair.acceleration(particleK, l, F, r2, inverseRegularisedR2, vDotR, alongR, alongV);
+                // m_l a_kl to k, -m_k a_kl to l.
+                const auto accumulate = [&](int d, double& sum) {
+                    double perMass = alongR * r[d];
+                    if constexpr (Terms::alongVelocity) perMass += alongV * vkl[d];
+                    sum += mass[l] * perMass;
+                    if constexpr (lanes > 1)
+                        toL[d * stride + q] = -particleK.mass * perMass;
+                    else
+                        as[l * D + d] -= particleK.mass * perMass;
+                };
+                accumulate(0, a0);
+                if constexpr (D > 1) accumulate(1, a1);
+                if constexpr (D > 2) accumulate(2, a2);
+                if constexpr (Terms::densityRate) {
+                    double toK, toNeighbourDensity;
+                    pair.densityRates(particleK, l, r, F, r2, inverseRegularisedR2, vDotR, toK, toNeighbourDensity);
+                    densityRateK += toK;
+                    if constexpr (lanes > 1)
+                        toL[D * stride + q] = toNeighbourDensity;
+                    else
+                        drhoK[l] += toNeighbourDensity;
+                }
+            }
+            if constexpr (lanes > 1) addWhatNeighboursReceived(count);
+            as[k * D] += a0;
+            if constexpr (D > 1) as[k * D + 1] += a1;
+            if constexpr (D > 2) as[k * D + 2] += a2;
+            if constexpr (Terms::densityRate) drhoK[k] += densityRateK;
+        }
+    }
+
+    // In lanes: adds to the listed neighbours what the pair loop stored beside them.
+    void addWhatNeighboursReceived(std::size_t count) {
+        const std::size_t stride = neighbours_.size();
+        const double* const toL = toNeighbour_.data();
+        for (std::size_t q = 0; q < count; ++q) {
+            const std::size_t l = neighbours_[q];
+            for (int d = 0; d < D; ++d) accelerations_[l * D + d] += toL[d * stride + q];
+            if constexpr (Terms::densityRate) densityRates_[l] += toL[D * stride + q];
+        }
+    }
+
+    // Sums the threads' accumulators, adds gravity and the fluid-wall terms (gathered per fluid
+    // particle) and writes the rates in storage order.
+    template <class Wraps>
+    void sumWithWallTerms([[maybe_unused]] Wraps wraps) {
+#pragma omp for schedule(static, chunk)
+        for (std::size_t k = 0; k < n_; ++k) {
+            const std::size_t i = cells_.sortedIndex(k);
+            if (i >= owned_) continue;
+            Vec<D> acceleration = bodyForce_;
+            double densityRate = 0.0;
+            for (std::size_t t = 0; t < team_; ++t) {
+                acceleration += ordered_.acceleration[t][k];
+                if constexpr (Terms::densityRate) densityRate += ordered_.densityRate[t][k];
+            }
+            if (cells_.cellAt(k) != wallStencilCell_) {  // the wall list has the fluid list's grid
+                wallStencilCell_ = cells_.cellAt(k);
+                wallStencil_ = wallCells_.anyPointNear(wallStencilCell_) ? wallCells_.stencilRanges(x_[i]) : Stencil{};
+            }
+            if constexpr (lanes == 1)
+                addWallTerms(i, acceleration, densityRate);
+            else
+                addWallTermsInLanes(i, acceleration, densityRate, wraps);
+            a_[i] = acceleration;
+            if constexpr (Terms::continuity) drho_[i] = densityRate;
+        }
+    }
+
+    // Fluid particle i's wall terms, one wall neighbour at a time.
+    void addWallTerms(std::size_t i, Vec<D>& acceleration, double& densityRate) const {
+        const double pOverRho2 = p_[i] / (rho_[i] * rho_[i]);
+        wallCells_.forEachNeighbour(wallStencil_, x_[i], radius_, [&](std::uint32_t w, const Vec<D>& r, double r2) {
+            const double F = kernel_.gradientFactor(std::sqrt(r2));
+            acceleration += fluidWallAcceleration<Terms::pressure>(pair_.viscosity, r, r2, F, eta2_, pOverRho2, rho_[i], v_[i], wall_, w);
+            if constexpr (Terms::densityRate) densityRate += wall_.mass[w] * F * (v_[i] - wallVelocity_[w]).dot(r);
+        });
+    }
+
+    // The same in lanes, as the fluid pairs: listed, padded with the first wall neighbour at weight 0.
+    template <class Wraps>
+    void addWallTermsInLanes(std::size_t i, Vec<D>& acceleration, double& densityRate, Wraps) {
+        const double pOverRho2 = p_[i] / (rho_[i] * rho_[i]);
+        std::array<double, D> xi, vi{};
+        for (int d = 0; d < D; ++d) xi[d] = x_[i][d];
+        if constexpr (Terms::readsVelocity)
+            for (int d = 0; d < D; ++d) vi[d] = v_[i][d];
+        const std::size_t count = listNeighbours<Wraps::value>(wallCells_, wallStencil_, xi, 0);
+        const std::size_t padded = (count + lanes - 1) / lanes * lanes;
+        for (std::size_t q = count; q < padded; ++q) neighbours_[q] = neighbours_[0];
+        const std::uint32_t* listed = neighbours_.data();
+        const double* const xw = wallCells_.sortedPosition(0).data();
+        const bool any = count > 0;  // then there are wall particles to point at
+        [[maybe_unused]] const double* const vw = any ? wallVelocity_[0].data() : nullptr;
+        [[maybe_unused]] const double* const viscousVw = Viscosity::enabled && any ? wall_.viscousVelocity[0].data() : nullptr;
+        const double rhoI = rho_[i];
+        const double eta2 = eta2_;
+        const Kernel kernel = kernel_;
+        const Viscosity viscosity = pair_.viscosity;
+        double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateI = 0.0;
+#pragma omp simd reduction(+ : a0, a1, a2, densityRateI)
+        for (std::size_t q = 0; q < padded; ++q) {
+            const std::size_t l = listed[q], w = wallCells_.sortedIndex(l);
+            double r[D];
+            double r2 = 0.0, viwDotR = 0.0, vDotR = 0.0;
+#pragma GCC unroll 3
+            for (int d = 0; d < D; ++d) {
+                r[d] = cells_.template separation<Wraps::value>(xi[d] - xw[l * D + d], d);
+                r2 += r[d] * r[d];
+                if constexpr (Viscosity::enabled) viwDotR += (vi[d] - viscousVw[w * D + d]) * r[d];
+                if constexpr (Terms::densityRate) vDotR += (vi[d] - vw[w * D + d]) * r[d];
+            }
+            const double F = (q < count ? 1.0 : 0.0) * kernel.gradientFactor(std::sqrt(r2));
+            double alongR = 0.0, alongV = 0.0;
+            fluidWallFactors<Terms::pressure>(viscosity, viwDotR, r2, F, eta2, pOverRho2, rhoI, wall_.mass[w], wall_.pressure[w], wall_.density[w],
+                                              alongR, alongV);
+            const auto component = [&](int d) {
+                double component = alongR * r[d];
+                if constexpr (Terms::alongVelocity) component += alongV * (vi[d] - viscousVw[w * D + d]);
+                return component;
+            };
+            a0 += component(0);
+            if constexpr (D > 1) a1 += component(1);
+            if constexpr (D > 2) a2 += component(2);
+            if constexpr (Terms::densityRate) densityRateI += wall_.mass[w] * F * vDotR;
+        }
+        acceleration[0] += a0;
+        if constexpr (D > 1) acceleration[1] += a1;
+        if constexpr (D > 2) acceleration[2] += a2;
+        densityRate += densityRateI;
+    }
+
+    const CellLinkedList<D>& cells_;
+    const CellLinkedList<D>& wallCells_;
+    CellOrderedFluid<D>& ordered_;
+    Kernel kernel_;
+    FluidPairTerms<D, Terms, Viscosity, Diffusion> pair_;
+    std::size_t n_ = 0, owned_ = 0;
+    const Vec<D>* x_ = nullptr;
+    const Vec<D>* v_ = nullptr;
+    const double* m_ = nullptr;
+    const double* rho_ = nullptr;
+    const double* p_ = nullptr;
+    Vec<D>* a_ = nullptr;
+    double* drho_ = nullptr;
+    Vec<D> bodyForce_;
+    const Vec<D>* wallVelocity_ = nullptr;
+    WallPairFields<D> wall_{};
+    double radius_ = 0.0, eta2_ = 0.0;
+
+    // Each thread's own.
+    std::size_t thread_ = 0, team_ = 1;
+    std::vector<std::uint32_t> neighbours_;
+    std::vector<double> toNeighbour_, distance2_;
+    double* accelerations_ = nullptr;  // this thread's accumulator, D doubles per place
+    double* densityRates_ = nullptr;
+    std::uint32_t stencilCell_ = std::numeric_limits<std::uint32_t>::max();
+    Stencil stencil_;
+    std::uint32_t wallStencilCell_ = std::numeric_limits<std::uint32_t>::max();
+    Stencil wallStencil_;
+};
+
+// The fluid's rates, for one instantiation of the terms.
+template <int D, bool Continuity, bool ViscousOnly, class Kernel, class Viscosity, class Diffusion>
+void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, Viscosity viscosity, Diffusion diffusion, const Vec<D>& gravity) {
+    using Loop = FluidRatesLoop<D, FluidRateTerms<Continuity, ViscousOnly, Viscosity, Diffusion>, Kernel, Viscosity, Diffusion>;
+    const Loop shared(s, ordered, kernel, viscosity, diffusion, gravity);
+#pragma omp parallel
+    {
+        Loop loop = shared;
+        loop.run();
+    }
+}
+
+}  // namespace
+}  // namespace sph
