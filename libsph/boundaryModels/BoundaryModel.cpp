@@ -4,6 +4,7 @@
 #include "boundaryModels/DeficiencyWeightingBoundaryIntegral.hpp"
 #include "boundaryModels/DeficiencyWeightingJones2010.hpp"
 #include "boundaryModels/DummyParticlesAdami2012.hpp"
+#include "boundaryModels/ModifiedDynamicBoundaryEnglish2022.hpp"
 #include "boundaryModels/RepulsiveWall.hpp"
 #include "boundaryModels/DynamicBoundaryCrespo2007.hpp"
 
@@ -23,6 +24,13 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
     registry.add(
         "dynamicBoundary", {"wall particles with continuity density and EOS pressure", "Crespo, Gomez-Gesteira & Dalrymple, CMC 5 (2007) 173", {}},
         [](const Dictionary&, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> { return std::make_unique<DynamicBoundaryCrespo2007<D>>(); });
+    registry.add("modifiedDynamicBoundary",
+                 {"mDBC: wall particles whose density is extrapolated from the fluid at their ghost nodes (first-order consistent)",
+                  "English et al., Comput. Part. Mech. 9 (2022) 1",
+                  {{"firstLayerOffset", "0.5", "the wall surface in front of the first layer, in spacings (as the generator's firstLayerOffset)"}}},
+                 [](const Dictionary& dict, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<ModifiedDynamicBoundaryEnglish2022<D>>(dict);
+                 });
     const CoefficientDoc K{"K", "", "squared velocity, ~ g H (kernel normalised to 1 at contact)"};
     const CoefficientDoc form{"form", "square", "square: r/|r|^2; shifted: r/(|r| max(|r| - shift, 0.1 dx))"};
     const CoefficientDoc shift{"shift", "dx/2", "with form shifted: distance of the singularity"};

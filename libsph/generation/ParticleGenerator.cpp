@@ -216,12 +216,18 @@ struct GeneratedFluid {
     std::vector<std::string> warnings;
 };
 
+// The unit vector against gravity (zero without gravity): fluid tops and depths are measured along it.
+template <int D>
+Vec<D> upwards(const FluidProperties<D>& properties) {
+    return properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
+}
+
 template <int D>
 GeneratedFluid<D> fillFluid(const Dictionary& dict, const LatticeDomain<D>& lattice, const GeneratedWalls<D>& walls,
                             const WallClearance<D>& clearOfTheWalls, const GenerationDomain<D>& shapeDomain, const std::string& initialPressure,
                             const FluidProperties<D>& properties, std::vector<std::string>& notes) {
     GeneratedFluid<D> out;
-    const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
+    const Vec<D> up = upwards(properties);
     const Dictionary& fluid = dict.subDict("fluid");
     for (const std::string& name : fluid.keywords()) {
         const Dictionary& region = fluid.subDict(name);
@@ -276,8 +282,7 @@ struct InitialState {
         return std::visit([&](const auto& eos) { return eos.pressure(rho); }, properties.eos);
     }
     double hydrostaticPressure(const Vec<D>& x, double top) const {
-        const Vec<D> up = properties.gravity.norm() > 0.0 ? Vec<D>(-properties.gravity.normalized()) : Vec<D>::Zero();
-        return properties.rho0 * properties.gravity.norm() * (top - x.dot(up));
+        return properties.rho0 * properties.gravity.norm() * (top - x.dot(upwards(properties)));
     }
 };
 

@@ -7,11 +7,16 @@
 #pragma once
 
 #include <numbers>
+#include <string_view>
 
 namespace sph {
 
 template <int D>
 struct CubicSplineMonaghanLattanzio1985 {
+    static constexpr std::string_view name = "cubicSpline";
+    static constexpr std::string_view summary = "cubic B-spline, support 2h";
+    static constexpr std::string_view reference = "Monaghan & Lattanzio, A&A 149 (1985) 135";
+
     explicit CubicSplineMonaghanLattanzio1985(double smoothingLength)
         : h(smoothingLength), invH(1.0 / smoothingLength), sigma(normalisation(smoothingLength)) {}
 

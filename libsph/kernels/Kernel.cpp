@@ -1,19 +1,18 @@
 #include "kernels/Kernel.hpp"
 
+#include <type_traits>
+
 namespace sph {
 
 template <int D>
 KernelRegistry<D> makeKernelRegistry() {
     const CoefficientDoc hdx{"hdx", "", "smoothing length over particle spacing, h = hdx dx (>= 1)"};
     KernelRegistry<D> registry("kernel");
-    registry.add("cubicSpline", {"cubic B-spline, support 2h", "Monaghan & Lattanzio, A&A 149 (1985) 135", {hdx}},
-                 [](double h) { return Kernel<D>{CubicSplineMonaghanLattanzio1985<D>(h)}; });
-    registry.add("quinticSpline", {"quintic spline, support 3h", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", {hdx}},
-                 [](double h) { return Kernel<D>{QuinticSplineMorris1997<D>(h)}; });
-    registry.add("wendlandC2", {"Wendland C2, support 2h", "Wendland, Adv. Comput. Math. 4 (1995) 389", {hdx}},
-                 [](double h) { return Kernel<D>{WendlandC2<D>(h)}; });
-    registry.add("wendlandC4", {"Wendland C4, support 2h", "Wendland, Adv. Comput. Math. 4 (1995) 389", {hdx}},
-                 [](double h) { return Kernel<D>{WendlandC4<D>(h)}; });
+    [&]<class... Kernels>(std::type_identity<std::variant<Kernels...>>) {
+        (registry.add(std::string(Kernels::name), {std::string(Kernels::summary), std::string(Kernels::reference), {hdx}},
+                      [](double h) { return Kernel<D>{Kernels(h)}; }),
+         ...);
+    }(std::type_identity<Kernel<D>>{});
     return registry;
 }
 

@@ -7,11 +7,16 @@
 
 #include <algorithm>
 #include <numbers>
+#include <string_view>
 
 namespace sph {
 
 template <int D>
 struct QuinticSplineMorris1997 {
+    static constexpr std::string_view name = "quinticSpline";
+    static constexpr std::string_view summary = "quintic spline, support 3h";
+    static constexpr std::string_view reference = "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214";
+
     explicit QuinticSplineMorris1997(double smoothingLength)
         : h(smoothingLength), invH(1.0 / smoothingLength), sigma(normalisation(smoothingLength)) {}
 

@@ -8,11 +8,16 @@
 
 #include <algorithm>
 #include <numbers>
+#include <string_view>
 
 namespace sph {
 
 template <int D>
 struct WendlandC4 {
+    static constexpr std::string_view name = "wendlandC4";
+    static constexpr std::string_view summary = "Wendland C4, support 2h";
+    static constexpr std::string_view reference = "Wendland, Adv. Comput. Math. 4 (1995) 389";
+
     explicit WendlandC4(double smoothingLength) : h(smoothingLength), invH(1.0 / smoothingLength), sigma(normalisation(smoothingLength)) {}
 
     double supportRadius() const { return 2.0 * h; }

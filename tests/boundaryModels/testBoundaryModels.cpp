@@ -1,5 +1,6 @@
 #include "boundaryModels/DummyParticlesAdami2012.hpp"
 #include "boundaryModels/DynamicBoundaryCrespo2007.hpp"
+#include "boundaryModels/ModifiedDynamicBoundaryEnglish2022.hpp"
 #include "physics/FluidSystem.hpp"
 
 #include "support/BlockDomain.hpp"
@@ -37,8 +38,13 @@ FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model, const 
     walls.addVector("normal", Vec<2>(0.0, 1.0));
     walls.addInteger("patch", 0);
     walls.addVector("acceleration", wallAcceleration, false);
+    walls.addScalar("spacing", dx);
+    auto& layers = walls.addInteger("layer", 0);
     for (int layer = 0; layer < 3; ++layer)
-        for (int i = 0; i < nx; ++i) walls.position[static_cast<std::size_t>(layer * nx + i)] = {(i + 0.5) * dx, -(layer + 0.5) * dx};
+        for (int i = 0; i < nx; ++i) {
+            walls.position[static_cast<std::size_t>(layer * nx + i)] = {(i + 0.5) * dx, -(layer + 0.5) * dx};
+            layers[static_cast<std::size_t>(layer * nx + i)] = layer;
+        }
     std::vector<Patch<2>> patches(1);
     patches[0].name = "floor";
     patches[0].begin = 0;
@@ -208,4 +214,79 @@ TEST(DynamicBoundaryCrespo2007, WallDensityRatesEqualTheDirectSum) {
     compareWallDensityRatesWithDirectSum<3>(false);
     compareWallDensityRatesWithDirectSum<2>(true);
     compareWallDensityRatesWithDirectSum<2>(false);
+}
+
+TEST(ModifiedDynamicBoundaryEnglish2022, ExtrapolatesALinearDensityExactlyIntoEveryLayer) {
+    // First-order consistency: a density linear in x and y reaches every wall particle exactly,
+    // at the column's side edges too, where the ghost nodes see fluid on one side only.
+    auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));
+    const auto linear = [](const Vec<2>& x) { return rho0 * (1.0 + 0.02 * (H - x.y()) / H + 0.01 * x.x() / H); };
+    auto& rhoFluid = system.fluid.scalar("density");
+    for (std::size_t f = 0; f < system.fluid.size(); ++f) rhoFluid[f] = linear(system.fluid.position[f]);
+    system.evaluateRates(0.0);
+    const auto& rhoWall = system.walls.scalar("density");
+    const auto& pWall = system.walls.scalar("pressure");
+    const TaitEquationOfState eos(rho0, 20.0, 7.0, 0.0);
+    for (std::size_t w = 0; w < system.walls.size(); ++w) {
+        EXPECT_NEAR(rhoWall[w], linear(system.walls.position[w]), 1e-9 * rho0) << "wall particle at " << system.walls.position[w].transpose();
+        EXPECT_NEAR(pWall[w], eos.pressure(rhoWall[w]), 1e-9 * rho0 * g * H);
+    }
+}
+
+namespace {
+
+// One fluid particle above two wall particles, the second beyond its reach.
+FluidSystem<2> oneFluidParticleOverAWall(bool wallsHaveLayers) {
+    ParticleSet<2> fluid("fluid");
+    fluid.resize(1);
+    fluid.position[0] = {0.0, 0.02};
+    fluid.addScalar("density", 1010.0);
+    fluid.addScalar("mass", 0.4);
+    fluid.addVector("velocity", Vec<2>::Zero());
+    ParticleSet<2> walls("walls");
+    walls.resize(2);
+    walls.position[0] = {0.0, -0.5 * dx};
+    walls.position[1] = {0.5, -0.5 * dx};
+    walls.addScalar("mass", 0.4);
+    walls.addScalar("spacing", dx);
+    walls.addVector("normal", Vec<2>(0.0, 1.0));
+    if (wallsHaveLayers) walls.addInteger("layer", 0);
+    std::vector<Patch<2>> patches(1);
+    patches[0] = {"floor", 0, 2, std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")), std::nullopt, nullptr};
+    FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(rho0, 20.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
+                          DensityFormulation::Continuity};
+    return FluidSystem<2>(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1), Vec<2>(0.6, 0.1),
+                          Vec<2>::Zero(), 0.0);
+}
+
+}  // namespace
+
+TEST(ModifiedDynamicBoundaryEnglish2022, TakesTheShepardDensityWhereTheGhostNodeSeesTooLittleFluid) {
+    // One fluid particle: the first-order system is singular, so rho_w = m W / (V W) = rho_f;
+    // the second wall particle's ghost node sees no fluid: rho0.
+    auto system = oneFluidParticleOverAWall(true);
+    EXPECT_FALSE(system.wallDensityEvolves());
+    system.evaluateRates(0.0);
+    EXPECT_NEAR(system.walls.scalar("density")[0], 1010.0, 1e-9);
+    EXPECT_EQ(system.walls.scalar("density")[1], rho0);
+    EXPECT_EQ(system.walls.scalar("pressure")[1], 0.0);
+}
+
+TEST(ModifiedDynamicBoundaryEnglish2022, RefusesWallsWithoutLayers) {
+    try {
+        auto system = oneFluidParticleOverAWall(false);
+        system.evaluateRates(0.0);
+        FAIL() << "no error for walls without layers";
+    } catch (const FatalError& e) {
+        EXPECT_NE(std::string(e.what()).find("needs the wall field 'layer'"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ModifiedDynamicBoundaryEnglish2022, HoldsTheColumnAgainstGravity) {
+    // As the dummy particles above: the bottom row feels what the bulk feels.
+    auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));
+    system.evaluateRates(0.0);
+    const auto& a = system.fluid.vector("acceleration");
+    const std::size_t nx = 20, bulkRow = 4;
+    for (std::size_t i = 5; i < 15; ++i) EXPECT_NEAR(a[i].y(), a[bulkRow * nx + i].y(), 0.01 * g) << "column " << i;
 }

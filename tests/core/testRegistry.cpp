@@ -32,7 +32,7 @@ TEST(Registry, UnknownNameListsTheSortedValidNamesWithItsLocation) {
     } catch (const FatalError& e) {
         EXPECT_STREQ(e.what(),
                      "system/sphSchemes:3:17: error: unknown kernel 'gaussian'; valid kernel names are:\n"
-                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4");
+                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4\n    wendlandC6");
     }
 }
 
@@ -44,7 +44,7 @@ TEST(Registry, AMisspeltNameSaysWhatWasMeant) {
     } catch (const FatalError& e) {
         EXPECT_STREQ(e.what(),
                      "system/sphSchemes:1:28: error: unknown kernel 'wendlandc4'; valid kernel names are:\n"
-                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4\n(did you mean 'wendlandC4'?)");
+                     "    cubicSpline\n    quinticSpline\n    wendlandC2\n    wendlandC4\n    wendlandC6\n(did you mean 'wendlandC4'?)");
     }
     // Nothing near: no guess (the unknown name above, gaussian, gets none either).
     EXPECT_EQ(kernels.unknownMessage("sph").find("did you mean"), std::string::npos);

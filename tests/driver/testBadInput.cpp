@@ -57,15 +57,17 @@ TEST(BadInput, UnknownModelListsTheValidNames) {
     replaceInFile(dir / "system/sphSchemes", "type wendlandC2;", "type wendland;");
     expectContains(failureOf(dir), (dir / "system/sphSchemes").string() +
                                        ":1:28: error: unknown kernel 'wendland'; valid kernel names are:\n    cubicSpline\n    quinticSpline\n"
-                                       "    wendlandC2\n    wendlandC4");
+                                       "    wendlandC2\n    wendlandC4\n    wendlandC6");
 }
 
 TEST(BadInput, UnknownBoundaryModel) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "constant/boundaryProperties", "dummyParticles", "ghostParticles");
-    expectContains(failureOf(dir),
-                   "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    deficiencyCorrection\n"
-                   "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    monaghanKajtar");
+    expectContains(
+        failureOf(dir),
+        "error: unknown boundary model 'ghostParticles'; valid boundary model names are:\n    deficiencyCorrection\n"
+        "    deficiencyCorrectionBoundaryIntegral\n    dummyParticles\n    dynamicBoundary\n    lennardJones\n    modifiedDynamicBoundary\n"
+        "    monaghanKajtar");
 }
 
 TEST(BadInput, CorrectionWithAnUnknownPartner) {

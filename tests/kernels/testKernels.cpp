@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
+#include <variant>
 
 namespace {
 
@@ -19,11 +21,20 @@ struct KernelCase {
 template <class T>
 class KernelProperties : public ::testing::Test {};
 
-using AllKernels = ::testing::Types<KernelCase<sph::CubicSplineMonaghanLattanzio1985<1>, 1>, KernelCase<sph::CubicSplineMonaghanLattanzio1985<2>, 2>,
-                                    KernelCase<sph::CubicSplineMonaghanLattanzio1985<3>, 3>, KernelCase<sph::QuinticSplineMorris1997<1>, 1>,
-                                    KernelCase<sph::QuinticSplineMorris1997<2>, 2>, KernelCase<sph::QuinticSplineMorris1997<3>, 3>,
-                                    KernelCase<sph::WendlandC2<1>, 1>, KernelCase<sph::WendlandC2<2>, 2>, KernelCase<sph::WendlandC2<3>, 3>,
-                                    KernelCase<sph::WendlandC4<1>, 1>, KernelCase<sph::WendlandC4<2>, 2>, KernelCase<sph::WendlandC4<3>, 3>>;
+// Every kernel of the family (kernels/Kernel.hpp) in 1D, 2D and 3D.
+template <int D, class Family>
+struct CasesOf;
+template <int D, class... Kernels>
+struct CasesOf<D, std::variant<Kernels...>> {
+    using type = std::tuple<KernelCase<Kernels, D>...>;
+};
+template <class... Lists>
+struct TypesOf;
+template <class... In1, class... In2, class... In3>
+struct TypesOf<std::tuple<In1...>, std::tuple<In2...>, std::tuple<In3...>> {
+    using type = ::testing::Types<In1..., In2..., In3...>;
+};
+using AllKernels = TypesOf<CasesOf<1, sph::Kernel<1>>::type, CasesOf<2, sph::Kernel<2>>::type, CasesOf<3, sph::Kernel<3>>::type>::type;
 TYPED_TEST_SUITE(KernelProperties, AllKernels);
 
 // Integral of W over space by the radial measure (2, 2 pi r, 4 pi r^2), Simpson's rule.
@@ -106,4 +117,13 @@ TYPED_TEST(KernelProperties, NormalisationScalesAsInverseLengthToTheDimension) {
     using K = typename TypeParam::Kernel;
     const K a(1.0), b(2.0);
     EXPECT_NEAR(a.value(0.0) / b.value(0.0), std::pow(2.0, TypeParam::D), 1e-12);
+}
+
+TEST(WendlandC6, ValuesAtHalfTheSupportAsDehnenAndAlyNormaliseThem) {
+    // s = 1/2 at r = h: (1-s)^8 (1 + 8s + 25s^2 + 32s^3) = 15.25/256, (1-s)^7 (1 + 7s + 19s^2 + 21s^3) = 11.875/128;
+    // sigma = 55/64 (1D), 39/(14 pi) (2D), 1365/(512 pi) (3D) at h = 1.
+    const double pi = std::numbers::pi;
+    EXPECT_NEAR(sph::WendlandC6<1>(1.0).value(1.0), 55.0 / 64.0 * 11.875 / 128.0, 1e-15);
+    EXPECT_NEAR(sph::WendlandC6<2>(1.0).value(1.0), 39.0 / (14.0 * pi) * 15.25 / 256.0, 1e-15);
+    EXPECT_NEAR(sph::WendlandC6<3>(1.0).value(1.0), 1365.0 / (512.0 * pi) * 15.25 / 256.0, 1e-15);
 }

@@ -81,6 +81,7 @@ FLOW_MODELS = [
     ("deficiencyCorrection", "type deficiencyCorrection;", "surface"),
     ("dummyParticles", "type dummyParticles; noSlip no;", "layers"),
     ("dynamicBoundary", "type dynamicBoundary;", "layers"),
+    ("modifiedDynamicBoundary", "type modifiedDynamicBoundary;", "layers"),
 ]
 
 
@@ -475,15 +476,19 @@ def table_rows(lines):
 
 
 def replace_rows(new_lines):
-    """--models: writes the re-run rows over their old ones in doc/boundarySuite.md."""
+    """--models: writes the re-run rows over their old ones in doc/boundarySuite.md, a new model's at the end of each table."""
     path = os.path.join(ROOT, "doc", "boundarySuite.md")
     with open(path) as f:
         lines = f.read().split("\n")
-    old = table_rows(lines)
     for key, index in table_rows(new_lines).items():
-        if key not in old:
-            raise SystemExit("boundarySuite.py: no row %s in %s; run the whole suite" % (key, path))
-        lines[old[key]] = new_lines[index]
+        old = table_rows(lines)
+        if key in old:
+            lines[old[key]] = new_lines[index]
+            continue
+        section = [row for (heading, _), row in old.items() if heading == key[0]]
+        if not section:
+            raise SystemExit("boundarySuite.py: no table %s in %s; run the whole suite" % (key[0], path))
+        lines.insert(max(section) + 1, new_lines[index])  # a model new to the suite: its row ends the table
     with open(path, "w") as f:
         f.write("\n".join(lines))
     print("\n".join(new_lines))

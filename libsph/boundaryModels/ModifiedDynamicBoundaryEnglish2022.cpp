@@ -1,0 +1,103 @@
+#include "boundaryModels/ModifiedDynamicBoundaryEnglish2022.hpp"
+
+#include "physics/FluidSystem.hpp"
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sph {
+
+namespace {
+
+// Below this |det| the first-order system is too near singular to trust (as DualSPHysics).
+constexpr double smallestDeterminant = 1e-3;
+
+// The density a wall particle at x_w takes from the fluid around its ghost node x_g.
+template <int D>
+struct GhostNodeDensity {
+    Eigen::Matrix<double, D + 1, D + 1> moments = Eigen::Matrix<double, D + 1, D + 1>::Zero();
+    Eigen::Matrix<double, D + 1, 1> massSums = Eigen::Matrix<double, D + 1, 1>::Zero();
+
+    // One fluid neighbour: volume V, mass m, r = x_g - x_f, kernel value W and gradient factor F.
+    void add(double volume, double mass, const Vec<D>& r, double W, double F) {
+        Eigen::Matrix<double, D + 1, 1> weights;  // W and grad W = F r
+        weights[0] = W;
+        weights.template tail<D>() = F * r;
+        Eigen::Matrix<double, D + 1, 1> taylor;  // 1 and x_f - x_g
+        taylor[0] = 1.0;
+        taylor.template tail<D>() = -r;
+        moments.noalias() += volume * weights * taylor.transpose();
+        massSums += mass * weights;
+    }
+
+    double extrapolatedTo(const Vec<D>& offset, double rho0) const {
+        if (std::abs(moments.determinant()) >= smallestDeterminant) {
+            const Eigen::Matrix<double, D + 1, 1> solution = moments.inverse() * massSums;
+            return solution[0] + offset.dot(solution.template tail<D>());
+        }
+        return moments(0, 0) > 0.0 ? massSums[0] / moments(0, 0) : rho0;
+    }
+};
+
+}  // namespace
+
+template <int D>
+ModifiedDynamicBoundaryEnglish2022<D>::ModifiedDynamicBoundaryEnglish2022(const Dictionary& dict)
+    : firstLayerOffset_(dict.getOrDefault("firstLayerOffset", 0.5)) {
+    if (firstLayerOffset_ < 0.0)
+        dict.fail("firstLayerOffset", fmt::format("found {:g}; valid: >= 0 (the generator's firstLayerOffset, 1/2 by default)", firstLayerOffset_));
+}
+
+template <int D>
+std::string ModifiedDynamicBoundaryEnglish2022<D>::describe() const {
+    return fmt::format("modifiedDynamicBoundary: firstLayerOffset {:g}", firstLayerOffset_);
+}
+
+template <int D>
+void ModifiedDynamicBoundaryEnglish2022<D>::addFields(FluidSystem<D>& system) {
+    if (!system.walls.hasInteger("layer"))
+        throw FatalError(
+            "error: modifiedDynamicBoundary needs the wall field 'layer' (each wall particle's layer behind the surface), "
+            "which the wall particle file lacks; regenerate it with generateParticles");
+}
+
+template <int D>
+void ModifiedDynamicBoundaryEnglish2022<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double) {
+    const double* rhoFluid = system.fluid.scalar("density").data();
+    const double* mFluid = system.fluid.scalar("mass").data();
+    const Vec<D>* xWall = system.walls.position.data();
+    const Vec<D>* normal = system.walls.vector("normal").data();
+    const double* spacing = system.walls.scalar("spacing").data();
+    const int* layer = system.walls.integer("layer").data();
+    const Vec<D>* vWall = system.walls.vector("velocity").data();
+    double* rhoWall = system.walls.scalar("density").data();
+    double* pWall = system.walls.scalar("pressure").data();
+    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
+    const double radius = system.supportRadius();
+    const auto& cells = system.fluidCells();
+    std::visit(
+        [&](const auto& kernel, const auto& eos) {
+#pragma omp parallel for schedule(static)
+            for (std::size_t w = begin; w < end; ++w) {
+                const double depth = (layer[w] + firstLayerOffset_) * spacing[w];
+                const Vec<D> ghost = xWall[w] + 2.0 * depth * normal[w];
+                GhostNodeDensity<D> density;
+                cells.forEachNeighbour(ghost, radius, [&](std::uint32_t f, const Vec<D>& r, double r2) {
+                    const double distance = std::sqrt(r2);
+                    density.add(mFluid[f] / rhoFluid[f], mFluid[f], r, kernel.value(distance), kernel.gradientFactor(distance));
+                });
+                rhoWall[w] = density.extrapolatedTo(xWall[w] - ghost, eos.rho0);
+                pWall[w] = eos.pressure(std::max(rhoWall[w], eos.rho0));
+                if (vViscous) vViscous[w] = vWall[w];
+            }
+        },
+        system.models().kernel, system.models().eos);
+}
+
+template class ModifiedDynamicBoundaryEnglish2022<1>;
+template class ModifiedDynamicBoundaryEnglish2022<2>;
+template class ModifiedDynamicBoundaryEnglish2022<3>;
+
+}  // namespace sph
