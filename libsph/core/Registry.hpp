@@ -7,9 +7,12 @@
 #include "core/FatalError.hpp"
 #include "core/Spelling.hpp"
 
+#include <concepts>
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 namespace sph {
@@ -69,5 +72,28 @@ private:
     std::string family_;
     std::map<std::string, Item> entries_;
 };
+
+// A model of a variant family (equations of state, viscosities, density diffusions) declares
+// itself in its own header: its name, its documentation, its factory from the family's
+// arguments and its line in the run log. The family's registry then registers every
+// alternative of its variant (registerEach), and its run-log line is the model's (describeModel).
+template <class Model, class... Args>
+concept SelfDeclaredModel = requires(const Model model, Args... args) {
+    { Model::name } -> std::convertible_to<std::string_view>;
+    { Model::documentation() } -> std::same_as<ModelDoc>;
+    { Model::create(args...) } -> std::same_as<Model>;
+    { model.describe() } -> std::same_as<std::string>;
+};
+
+template <class... Models, class... Args>
+requires(SelfDeclaredModel<Models, Args...>&&...) void registerEach(Registry<std::variant<Models...>, Args...>& registry) {
+    (registry.add(std::string(Models::name), Models::documentation(), [](Args... args) { return std::variant<Models...>{Models::create(args...)}; }),
+     ...);
+}
+
+template <class... Models>
+std::string describeModel(const std::variant<Models...>& selected) {
+    return std::visit([](const auto& model) { return model.describe(); }, selected);
+}
 
 }  // namespace sph

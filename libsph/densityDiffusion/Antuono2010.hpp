@@ -16,9 +16,28 @@
 // Example (system/sphSchemes):   densityDiffusion { type antuono; delta 0.1; }
 #pragma once
 
+#include "densityDiffusion/DiffusionCoefficient.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <string_view>
+
 namespace sph {
 
 struct Antuono2010 {
+    static constexpr std::string_view name = "antuono";
+    static ModelDoc documentation() {
+        return {"delta-SPH diffusion with the renormalised density gradient (a hydrostatic gradient is not diffused)",
+                "Antuono et al., Comput. Phys. Commun. 181 (2010) 532; Marrone et al., CMAME 200 (2011) 1526",
+                {diffusionCoefficientDoc()}};
+    }
+    static Antuono2010 create(const Dictionary& dict, const ModelContext& context) {
+        return Antuono2010(readDiffusionCoefficient(dict), context.h, context.c0);
+    }
+    std::string describe() const { return fmt::format("antuono: delta {:g}", delta); }
+
     static constexpr bool enabled = true;
     static constexpr bool renormalisedGradient = true;  // the pair loop computes <grad rho>^L first
 

@@ -1,4 +1,5 @@
-// The density-diffusion family (acts with continuity density only).
+// The density-diffusion family (acts with continuity density only): each model declares itself
+// in its header (name, documentation, factory, run-log line) and is one entry in the variant.
 #pragma once
 
 #include "core/Registry.hpp"
@@ -24,6 +25,8 @@ template <int D>
 DensityDiffusionRegistry<D> makeDensityDiffusionRegistry();
 
 template <int D>
-std::string describe(const DensityDiffusion<D>& diffusion);
+std::string describe(const DensityDiffusion<D>& diffusion) {
+    return describeModel(diffusion);
+}
 
 }  // namespace sph

@@ -14,15 +14,32 @@
 #pragma once
 
 #include "core/Vector.hpp"
+#include "densityDiffusion/DiffusionCoefficient.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <fmt/format.h>
 
 #include <array>
 #include <cmath>
+#include <string>
+#include <string_view>
 
 namespace sph {
 
 // Series: the hydrostatic part from the series; false: from std::pow (see beyondSeries()).
 template <int D, bool Series = true>
 struct Fourtakas2019 {
+    static constexpr std::string_view name = "fourtakas";
+    static ModelDoc documentation() {
+        return {"diffusion of the dynamic density (hydrostatic part removed)",
+                "Fourtakas et al., Comput. Fluids 190 (2019) 346",
+                {diffusionCoefficientDoc()}};
+    }
+    static Fourtakas2019 create(const Dictionary& dict, const ModelContext& context) {
+        return Fourtakas2019(readDiffusionCoefficient(dict), context.h, context.c0, context.rho0, context.stiffness, context.exponent);
+    }
+    std::string describe() const { return fmt::format("fourtakas: delta {:g}", delta); }
+
     static constexpr bool enabled = true;
     static constexpr double seriesLimit = 0.02;
     static constexpr int seriesTerms = 8;

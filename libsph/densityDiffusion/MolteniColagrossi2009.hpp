@@ -5,9 +5,27 @@
 // Example (system/sphSchemes):   densityDiffusion { type molteniColagrossi; delta 0.1; }
 #pragma once
 
+#include "densityDiffusion/DiffusionCoefficient.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <string_view>
+
 namespace sph {
 
 struct MolteniColagrossi2009 {
+    static constexpr std::string_view name = "molteniColagrossi";
+    static ModelDoc documentation() {
+        return {
+            "delta-SPH diffusion of density differences", "Molteni & Colagrossi, Comput. Phys. Commun. 180 (2009) 861", {diffusionCoefficientDoc()}};
+    }
+    static MolteniColagrossi2009 create(const Dictionary& dict, const ModelContext& context) {
+        return MolteniColagrossi2009(readDiffusionCoefficient(dict), context.h, context.c0);
+    }
+    std::string describe() const { return fmt::format("molteniColagrossi: delta {:g}", delta); }
+
     static constexpr bool enabled = true;
 
     MolteniColagrossi2009(double delta, double h, double c0) : delta(delta), coefficient(2.0 * delta * h * c0) {}

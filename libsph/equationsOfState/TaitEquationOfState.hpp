@@ -7,11 +7,30 @@
 //   equationOfState { type tait; gamma 7; c0 20; backgroundPressure 0; }
 #pragma once
 
+#include "equationsOfState/SpeedOfSoundKeywords.hpp"
+#include "io/Dictionary.hpp"
+
+#include <fmt/format.h>
+
 #include <cmath>
+#include <string>
+#include <string_view>
 
 namespace sph {
 
 struct TaitEquationOfState {
+    static constexpr std::string_view name = "tait";
+    static ModelDoc documentation() {
+        return {"p = B((rho/rho0)^gamma - 1) + p0, B = c0^2 rho0/gamma", "Monaghan, J. Comput. Phys. 110 (1994) 399",
+                withSpeedOfSound({{"gamma", "7", "exponent"}})};
+    }
+    static TaitEquationOfState create(const Dictionary& dict, double rho0, double c0) {
+        return TaitEquationOfState(rho0, c0, dict.getPositiveOrDefault("gamma", 7.0), dict.getOrDefault("backgroundPressure", 0.0));
+    }
+    std::string describe() const {
+        return fmt::format("tait: rho0 {:g}, c0 {:g}, gamma {:g}, B {:g}, backgroundPressure {:g}", rho0, c0, gamma, B, p0);
+    }
+
     TaitEquationOfState(double rho0, double c0, double gamma, double p0)
         : rho0(rho0),
           c0(c0),

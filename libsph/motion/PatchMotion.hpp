@@ -4,8 +4,8 @@
 // Every particle follows the motion of the material point where it started: position,
 // velocity and acceleration at time t. Rigid motions turn the normals with the patch; a
 // deformation moves particles by a displacement field, and the wall-force models' normals,
-// spacings and areas are then recomputed (FluidSystem's boundary stage: from the moved
-// surface's chords on a 2D curve, else from the motion's areaStretch).
+// spacings and areas are then recomputed (motion/MovingWallPatch: from the moved surface's
+// chords on a 2D curve, else from the motion's areaStretch).
 #pragma once
 
 #include "core/Registry.hpp"

@@ -130,9 +130,6 @@ private:
     void computeForces(const Vec<D>& gravity, RateTerms terms);
     void addWallForces(double t);
     void moveWalls(double t);
-    void recomputeSurface(const Patch<D>& patch, double t);
-    bool surfaceFromChords(const Patch<D>& patch);
-    void surfaceFromMotion(const Patch<D>& patch, double t);
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;

@@ -1,5 +1,6 @@
 // Implementation of FluidSystem<D>, included once per dimension by FluidSystem<D>.cpp so the
 // hot loops of each dimension compile in parallel.
+#include "motion/MovingWallPatch.hpp"
 #include "physics/FluidSystem.hpp"
 #include "physics/FluidRates.tpp"
 #include "physics/FluidWallPair.hpp"
@@ -119,97 +120,12 @@ bool FluidSystem<D>::wrapPeriodic() {
 template <int D>
 void FluidSystem<D>::moveWalls(double t) {
     auto timer = timers.time(Stage::Boundary);
-    const auto& x0 = walls.vector("initialPosition");
-    const auto& n0 = walls.vector("initialNormal");
-    auto& velocity = walls.vector("velocity");
-    auto& acceleration = walls.vector("acceleration");
-    auto& normal = walls.vector("normal");
     for (Patch<D>& patch : patches) {
         if (!patch.motion) continue;
-        for (std::size_t w = patch.begin; w < patch.end; ++w) {
-            const Kinematics<D> k = patch.motion->at(x0[w], n0[w], t);
-            walls.position[w] = k.position;
-            velocity[w] = k.velocity;
-            acceleration[w] = k.acceleration;
-            normal[w] = patch.motion->normalAt(n0[w], t);
-        }
-        if (patch.motion->deforms()) recomputeSurface(patch, t);
+        moveWallPatch(walls, *patch.motion, patch.begin, patch.end, t);
         if (patch.cells) patch.cells->build(walls.position, patch.begin, patch.end);
     }
     wallCells_.build(walls.position, 0, wallParticleEnd_);
-}
-
-template <int D>
-void FluidSystem<D>::recomputeSurface(const Patch<D>& patch, double t) {
-    if constexpr (D == 2)
-        if (surfaceFromChords(patch)) return;
-    if constexpr (D >= 2) surfaceFromMotion(patch, t);
-}
-
-template <int D>
-bool FluidSystem<D>::surfaceFromChords(const Patch<D>& patch) {
-    // 2D walls generated along a curve (polyline, polygon, circle, ellipse) keep their surface
-    // particles (layer 0) in order along it: the normal is the neighbours' chord turned by 90
-    // degrees to the side of the initial normal, the spacing the mean distance to the
-    // neighbours; a closed curve wraps around. Exact for any deformation of a curved wall.
-    // False, with nothing changed, when storage order is not the order along the wall (boxWalls).
-    if constexpr (D != 2) {
-        return false;
-    } else {
-        const auto& layer = walls.integer("layer");
-        auto& normal = walls.vector("normal");
-        auto& spacing = walls.scalar("spacing");
-        auto& area = walls.scalar("area");
-        const auto& n0 = walls.vector("initialNormal");
-        const auto& x0 = walls.vector("initialPosition");
-        std::vector<std::size_t> surface;
-        for (std::size_t w = patch.begin; w < patch.end; ++w)
-            if (layer[w] == 0) surface.push_back(w);
-        const std::size_t m = surface.size();
-        if (m < 3) return true;
-        for (std::size_t k = 1; k < m; ++k)
-            if ((x0[surface[k]] - x0[surface[k - 1]]).norm() > 1.5 * spacing[surface[k - 1]]) return false;
-        const auto& x = walls.position;
-        const bool closed = (x[surface.front()] - x[surface.back()]).norm() < 1.5 * spacing[surface.front()];
-        for (std::size_t k = 0; k < m; ++k) {
-            const bool first = k == 0, last = k + 1 == m;
-            const std::size_t previous = first ? (closed ? surface[m - 1] : surface[k]) : surface[k - 1];
-            const std::size_t next = last ? (closed ? surface[0] : surface[k]) : surface[k + 1];
-            const Vec<2> chord = x[next] - x[previous];
-            Vec<2> n(-chord.y(), chord.x());
-            n.normalize();
-            if (n.dot(n0[surface[k]]) < 0.0) n = -n;
-            normal[surface[k]] = n;
-            const double back = (x[surface[k]] - x[previous]).norm(), ahead = (x[next] - x[surface[k]]).norm();
-            const bool end = previous == surface[k] || next == surface[k];
-            spacing[surface[k]] = end ? std::max(back, ahead) : 0.5 * (back + ahead);
-            // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
-            area[surface[k]] = end ? spacing[surface[k]] : 0.5 * chord.norm();
-        }
-        return true;
-    }
-}
-
-template <int D>
-void FluidSystem<D>::surfaceFromMotion(const Patch<D>& patch, double t) {
-    // Nanson's formula from the motion itself, for every layer (3D surface particles, and 2D
-    // boxWalls, have no order along the wall): area A0 |J F^-T n0|, the spacing stretched by
-    // the same ratio to the power 1/(D-1).
-    if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
-    const auto& x0 = walls.vector("initialPosition");
-    const auto& n0 = walls.vector("initialNormal");
-    const auto& area0 = walls.scalar("initialArea");
-    const auto& spacing0 = walls.scalar("initialSpacing");
-    auto& normal = walls.vector("normal");
-    auto& spacing = walls.scalar("spacing");
-    auto& area = walls.scalar("area");
-    for (std::size_t w = patch.begin; w < patch.end; ++w) {
-        const Vec<D> stretched = patch.motion->areaStretch(x0[w], n0[w], t);
-        const double ratio = stretched.norm();
-        normal[w] = stretched / ratio;
-        area[w] = area0[w] * ratio;
-        spacing[w] = spacing0[w] * (D == 3 ? std::sqrt(ratio) : ratio);
-    }
 }
 
 template <int D>
@@ -267,18 +183,7 @@ void FluidSystem<D>::addWallForces(double t) {
         std::vector<Vec<D>> before;
         if (free) before = acceleration;
         patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
-        if (!free) continue;
-        // The body takes the reaction of what its patch added to the fluid.
-        Vec<D> force = Vec<D>::Zero();
-        double torque = 0.0;
-        const Vec<D> centreOfMass = patch.motion->centreOfMass();
-        const double* m = fluid.scalar("mass").data();
-        for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
-            const Vec<D> f = -m[i] * (acceleration[i] - before[i]);
-            force += f;
-            if constexpr (D == 2) torque += (fluid.position[i] - centreOfMass).x() * f.y() - (fluid.position[i] - centreOfMass).y() * f.x();
-        }
-        patch.motion->setLoads(force, torque, gravityAt(t), t);
+        if (free) loadFreeBody(*patch.motion, fluid, before, gravityAt(t), t);
     }
 }
 
@@ -334,12 +239,20 @@ void FluidSystem<D>::computeFluidPressure() {
         models_.eos);
 }
 
+// A variant family with one more alternative.
+template <class Family, class Extra>
+struct AppendAlternative;
+template <class... Models, class Extra>
+struct AppendAlternative<std::variant<Models...>, Extra> {
+    using type = std::variant<Models..., Extra>;
+};
+
 template <int D>
 void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
     if (auto* fourtakas = std::get_if<Fourtakas2019<D>>(&models_.diffusion)) fourtakas->setGravity(gravity, supportRadius_);
     // The diffusion as the pair loop evaluates it: Fourtakas' term beyond its series' reach is a
     // type of its own, so that the loop over pairs never branches to std::pow.
-    using PairDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>, Fourtakas2019<D, false>, Antuono2010>;
+    using PairDiffusion = AppendAlternative<DensityDiffusion<D>, Fourtakas2019<D, false>>::type;
     const PairDiffusion pairDiffusion = std::visit(
         [](const auto& diffusion) -> PairDiffusion {
             if constexpr (std::is_same_v<std::decay_t<decltype(diffusion)>, Fourtakas2019<D>>)

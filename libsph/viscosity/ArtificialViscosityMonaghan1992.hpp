@@ -6,11 +6,30 @@
 // Example (system/sphSchemes):   viscosity { type artificial; alpha 0.02; beta 0; }
 #pragma once
 
+#include "core/Registry.hpp"
+#include "io/Dictionary.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <string>
+#include <string_view>
 
 namespace sph {
 
 struct ArtificialViscosityMonaghan1992 {
+    static constexpr std::string_view name = "artificial";
+    static ModelDoc documentation() {
+        return {"Monaghan artificial viscosity on approaching pairs",
+                "Monaghan, Annu. Rev. Astron. Astrophys. 30 (1992) 543",
+                {{"alpha", "", "linear coefficient (0.01-0.1 for water)"}, {"beta", "0", "quadratic coefficient"}}};
+    }
+    static ArtificialViscosityMonaghan1992 create(const Dictionary& dict, const ModelContext& context) {
+        return ArtificialViscosityMonaghan1992(dict.getNonNegative("alpha"), dict.getNonNegativeOrDefault("beta", 0.0), context.h, context.c0);
+    }
+    std::string describe() const { return fmt::format("artificial: alpha {:g}, beta {:g}", alpha, beta); }
+
     static constexpr bool enabled = true;
 
     ArtificialViscosityMonaghan1992(double alpha, double beta, double h, double c0) : alpha(alpha), beta(beta), h(h), c0(c0) {}

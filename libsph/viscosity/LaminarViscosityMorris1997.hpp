@@ -5,11 +5,29 @@
 // Example (system/sphSchemes):   viscosity { type laminar; }
 #pragma once
 
+#include "core/Registry.hpp"
 #include "core/Vector.hpp"
+#include "io/Dictionary.hpp"
+#include "physics/ModelContext.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <string_view>
 
 namespace sph {
 
 struct LaminarViscosityMorris1997 {
+    static constexpr std::string_view name = "laminar";
+    static ModelDoc documentation() {
+        return {"Morris laminar viscosity, nu from constant/fluidProperties", "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", {}};
+    }
+    static LaminarViscosityMorris1997 create(const Dictionary& dict, const ModelContext& context) {
+        if (!(context.nu > 0.0)) dict.fail("type", "laminar viscosity needs a kinematic viscosity nu > 0 in constant/fluidProperties");
+        return LaminarViscosityMorris1997(context.nu);
+    }
+    std::string describe() const { return fmt::format("laminar: nu {:g}", nu); }
+
     static constexpr bool enabled = true;
 
     explicit LaminarViscosityMorris1997(double nu) : nu(nu) {}

@@ -1,0 +1,115 @@
+#include "motion/MovingWallPatch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sph {
+
+namespace {
+
+// 2D walls generated along a curve (polyline, polygon, circle, ellipse) keep their surface
+// particles (layer 0) in order along it: the normal is the neighbours' chord turned by 90
+// degrees to the side of the initial normal, the spacing the mean distance to the
+// neighbours; a closed curve wraps around. Exact for any deformation of a curved wall.
+// False, with nothing changed, when storage order is not the order along the wall (boxWalls).
+bool surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end) {
+    const auto& layer = walls.integer("layer");
+    auto& normal = walls.vector("normal");
+    auto& spacing = walls.scalar("spacing");
+    auto& area = walls.scalar("area");
+    const auto& n0 = walls.vector("initialNormal");
+    const auto& x0 = walls.vector("initialPosition");
+    std::vector<std::size_t> surface;
+    for (std::size_t w = begin; w < end; ++w)
+        if (layer[w] == 0) surface.push_back(w);
+    const std::size_t m = surface.size();
+    if (m < 3) return true;
+    for (std::size_t k = 1; k < m; ++k)
+        if ((x0[surface[k]] - x0[surface[k - 1]]).norm() > 1.5 * spacing[surface[k - 1]]) return false;
+    const auto& x = walls.position;
+    const bool closed = (x[surface.front()] - x[surface.back()]).norm() < 1.5 * spacing[surface.front()];
+    for (std::size_t k = 0; k < m; ++k) {
+        const bool first = k == 0, last = k + 1 == m;
+        const std::size_t previous = first ? (closed ? surface[m - 1] : surface[k]) : surface[k - 1];
+        const std::size_t next = last ? (closed ? surface[0] : surface[k]) : surface[k + 1];
+        const Vec<2> chord = x[next] - x[previous];
+        Vec<2> n(-chord.y(), chord.x());
+        n.normalize();
+        if (n.dot(n0[surface[k]]) < 0.0) n = -n;
+        normal[surface[k]] = n;
+        const double back = (x[surface[k]] - x[previous]).norm(), ahead = (x[next] - x[surface[k]]).norm();
+        const bool atEnd = previous == surface[k] || next == surface[k];
+        spacing[surface[k]] = atEnd ? std::max(back, ahead) : 0.5 * (back + ahead);
+        // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
+        area[surface[k]] = atEnd ? spacing[surface[k]] : 0.5 * chord.norm();
+    }
+    return true;
+}
+
+// Nanson's formula from the motion itself, for every layer (3D surface particles, and 2D
+// boxWalls, have no order along the wall): area A0 |J F^-T n0|, the spacing stretched by the
+// same ratio to the power 1/(D-1).
+template <int D>
+void surfaceFromMotion(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t) {
+    if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
+    const auto& x0 = walls.vector("initialPosition");
+    const auto& n0 = walls.vector("initialNormal");
+    const auto& area0 = walls.scalar("initialArea");
+    const auto& spacing0 = walls.scalar("initialSpacing");
+    auto& normal = walls.vector("normal");
+    auto& spacing = walls.scalar("spacing");
+    auto& area = walls.scalar("area");
+    for (std::size_t w = begin; w < end; ++w) {
+        const Vec<D> stretched = motion.areaStretch(x0[w], n0[w], t);
+        const double ratio = stretched.norm();
+        normal[w] = stretched / ratio;
+        area[w] = area0[w] * ratio;
+        spacing[w] = spacing0[w] * (D == 3 ? std::sqrt(ratio) : ratio);
+    }
+}
+
+}  // namespace
+
+template <int D>
+void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t) {
+    const auto& x0 = walls.vector("initialPosition");
+    const auto& n0 = walls.vector("initialNormal");
+    auto& velocity = walls.vector("velocity");
+    auto& acceleration = walls.vector("acceleration");
+    auto& normal = walls.vector("normal");
+    for (std::size_t w = begin; w < end; ++w) {
+        const Kinematics<D> k = motion.at(x0[w], n0[w], t);
+        walls.position[w] = k.position;
+        velocity[w] = k.velocity;
+        acceleration[w] = k.acceleration;
+        normal[w] = motion.normalAt(n0[w], t);
+    }
+    if (!motion.deforms()) return;
+    if constexpr (D == 2)
+        if (surfaceFromChords(walls, begin, end)) return;
+    if constexpr (D >= 2) surfaceFromMotion(walls, motion, begin, end, t);
+}
+
+template <int D>
+void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore, const Vec<D>& gravity, double t) {
+    const auto& acceleration = fluid.vector("acceleration");
+    const double* m = fluid.scalar("mass").data();
+    const Vec<D> centreOfMass = body.centreOfMass();
+    Vec<D> force = Vec<D>::Zero();
+    double torque = 0.0;
+    for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
+        const Vec<D> f = -m[i] * (acceleration[i] - accelerationBefore[i]);
+        force += f;
+        if constexpr (D == 2) torque += (fluid.position[i] - centreOfMass).x() * f.y() - (fluid.position[i] - centreOfMass).y() * f.x();
+    }
+    body.setLoads(force, torque, gravity, t);
+}
+
+template void moveWallPatch<1>(ParticleSet<1>&, const PatchMotion<1>&, std::size_t, std::size_t, double);
+template void moveWallPatch<2>(ParticleSet<2>&, const PatchMotion<2>&, std::size_t, std::size_t, double);
+template void moveWallPatch<3>(ParticleSet<3>&, const PatchMotion<3>&, std::size_t, std::size_t, double);
+template void loadFreeBody<1>(PatchMotion<1>&, const ParticleSet<1>&, const std::vector<Vec<1>>&, const Vec<1>&, double);
+template void loadFreeBody<2>(PatchMotion<2>&, const ParticleSet<2>&, const std::vector<Vec<2>>&, const Vec<2>&, double);
+template void loadFreeBody<3>(PatchMotion<3>&, const ParticleSet<3>&, const std::vector<Vec<3>>&, const Vec<3>&, double);
+
+}  // namespace sph

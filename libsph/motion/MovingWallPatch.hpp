@@ -1,0 +1,26 @@
+// Wall particles moved by their patch's motion, and a free body loaded by its patch: what the
+// boundary stage asks of motion/, on the particle store alone (no fluid system).
+#pragma once
+
+#include "core/ParticleSet.hpp"
+#include "motion/PatchMotion.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace sph {
+
+// Puts the wall particles [begin, end) where the motion has them at t: position, velocity,
+// acceleration and normal of each, from its initial position and normal. A deforming patch's
+// normals, spacings and areas are then recomputed: from the moved surface's chords where a 2D
+// patch was generated along a curve, else from the motion's area stretch (Nanson's formula).
+template <int D>
+void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t);
+
+// A free body takes the reaction of what its patch's wall forces added to the fluid's owned
+// particles: F = -sum_i m_i (a_i - a_i^before) and, in 2D, the torque of those forces about its
+// centre of mass.
+template <int D>
+void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore, const Vec<D>& gravity, double t);
+
+}  // namespace sph
