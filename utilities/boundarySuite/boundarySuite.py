@@ -397,7 +397,7 @@ def flow_lines(dam, slosh, linear, bulge, bulge3d, box):
     lines = ["", "## Flows that hurt: every wall model on the same case", "",
              "Every run alone on one thread, two at a time; penetrations: the most fluid particles behind the wall's first layer of "
              "particles at any step (wallPenetrations). The correction runs with its defaults (calibration wallPressure, the "
-             "wallDistance partner); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D tank).", "",
+             "wallDistance partner); dummy particles free-slip, 4 layers (3 in the sloshing tank, the bulge and the 3D tank), and so the dynamic boundary and mDBC (modifiedDynamicBoundary).", "",
              "### Standard 2D dam break (damBreakWallPressure2D, to T = t sqrt(g/H) = 8)", "",
              "Downstream-wall pressure at P1-P4 against De Courcy et al. (2024): RMS of the Delta T = 0.1 window means, T = 2-7, "
              "over rho g H (the fluid interpolated dx/2 from the wall for every model).", "",
