@@ -8,6 +8,7 @@
 //    reading the uncorrected acceleration when it needs it.
 #pragma once
 
+#include "boundaryModels/BoundaryView.hpp"
 #include "core/Registry.hpp"
 #include "io/Dictionary.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
@@ -18,9 +19,6 @@
 #include <string>
 
 namespace sph {
-
-template <int D>
-class FluidSystem;
 
 template <int D>
 class BoundaryModel {
@@ -49,19 +47,19 @@ public:
     virtual bool needsUncorrectedAcceleration() const { return false; }
 
     // Adds the fields the model reads or writes, once, before the first evaluation.
-    virtual void addFields(FluidSystem<D>& /*system*/) {}
+    virtual void addFields(const BoundaryView<D>& /*view*/) {}
 
     // Restart from a state the solver wrote after an evaluation: a model whose evaluation
     // carries history (temporal smoothing) repeats that evaluation from the written fields.
-    virtual void resume(const FluidSystem<D>& /*system*/, std::size_t /*begin*/, std::size_t /*end*/) {}
+    virtual void resume(const BoundaryView<D>& /*view*/, std::size_t /*begin*/, std::size_t /*end*/) {}
 
-    // Stage 3: sets the state of wall particles [begin, end) from the fluid at time t.
-    virtual void updateWalls(FluidSystem<D>& /*system*/, std::size_t /*begin*/, std::size_t /*end*/, double /*t*/) {}
+    // Stage 3: sets the state of wall particles [begin, end) from the fluid.
+    virtual void updateWalls(const BoundaryView<D>& /*view*/, std::size_t /*begin*/, std::size_t /*end*/) {}
 
     // Stage 5: adds the patch's accelerations to the fluid. `patchCells` indexes the patch's
     // particles [begin, end) of the wall set.
-    virtual void addWallForces(FluidSystem<D>& /*system*/, const CellLinkedList<D>& /*patchCells*/, std::size_t /*begin*/, std::size_t /*end*/,
-                               double /*t*/) {}
+    virtual void addWallForces(const BoundaryView<D>& /*view*/, const CellLinkedList<D>& /*patchCells*/, std::size_t /*begin*/, std::size_t /*end*/) {
+    }
 };
 
 // Layers of wall particles, the first dx/2 behind the wall, that fill a kernel support behind it.

@@ -3,7 +3,6 @@
 #include "boundaryModels/DeficiencyWeightingBoundaryIntegral.hpp"
 #include "boundaryModels/DeficiencyWeightingJones2010.hpp"
 #include "boundaryModels/WallPressureExtrapolation.hpp"
-#include "physics/FluidSystem.hpp"
 
 #include <fmt/format.h>
 
@@ -113,18 +112,18 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
 }
 
 template <int D, class Weighting>
-void DeficiencyCorrection<D, Weighting>::addFields(FluidSystem<D>& system) {
-    system.fluid.addVector("boundaryCorrection", Vec<D>::Zero());
-    system.walls.addScalar("correctionCoefficient", 0.0);
-    system.walls.addVector("acceleration", Vec<D>::Zero(), false);
-    if (sampleSize_ > 0) sampleRadius_ = system.supportRadius();
-    outsideFraction_ = std::visit([](const auto& kernel) { return KernelOutsideFraction<D>(kernel); }, system.models().kernel);
+void DeficiencyCorrection<D, Weighting>::addFields(const BoundaryView<D>& view) {
+    view.fluid.add(fields::boundaryCorrection, Vec<D>::Zero());
+    view.walls.add(fields::correctionCoefficient, 0.0);
+    view.walls.add(fields::acceleration, Vec<D>::Zero(), false);
+    if (sampleSize_ > 0) sampleRadius_ = view.supportRadius;
+    outsideFraction_ = std::visit([](const auto& kernel) { return KernelOutsideFraction<D>(kernel); }, view.kernel);
 }
 
 template <int D, class Weighting>
-void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) {
+void DeficiencyCorrection<D, Weighting>::resume(const BoundaryView<D>& view, std::size_t begin, std::size_t end) {
     // All zero: the state was written with another model on this patch; start afresh.
-    const auto& C = system.walls.scalar("correctionCoefficient");
+    const auto& C = view.walls[fields::correctionCoefficient];
     repeatWrittenCoefficients_ =
         calibration_ != DeficiencyCalibration::WallPressure &&
         std::any_of(C.begin() + static_cast<std::ptrdiff_t>(begin), C.begin() + static_cast<std::ptrdiff_t>(end), [](double c) { return c != 0.0; });
@@ -132,10 +131,10 @@ void DeficiencyCorrection<D, Weighting>::resume(const FluidSystem<D>& system, st
 }
 
 template <int D, class Weighting>
-void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin,
-                                                       std::size_t end, double t) {
-    const std::size_t n = system.fluid.ownedCount();
-    const Vec<D> gravity = system.gravityAt(t);
+void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t begin,
+                                                       std::size_t end) {
+    const std::size_t n = view.fluid.ownedCount();
+    const Vec<D>& gravity = view.gravity;
     const double lambda = repeatWrittenCoefficients_ ? 0.0 : firstEvaluation_ ? 1.0 : smoothing_;
     firstEvaluation_ = repeatWrittenCoefficients_ = false;
     weightSum_.assign(n, 0.0);
@@ -150,33 +149,32 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(FluidSystem<D>& system, c
     // instantiations few.
     const auto select = [](bool option, auto&& next) { option ? next(std::true_type{}) : next(std::false_type{}); };
     const bool wallPressureCalibration = calibration_ == DeficiencyCalibration::WallPressure;
-    select(radialDirection_, [&](auto radial) {
-        std::visit([&](const auto& kernel) { weighPairs<decltype(radial)::value>(system, patchCells, kernel); }, system.models().kernel);
-    });
+    select(radialDirection_,
+           [&](auto radial) { std::visit([&](const auto& kernel) { weighPairs<decltype(radial)::value>(view, patchCells, kernel); }, view.kernel); });
     select(wallPressureCalibration, [&](auto wallPressure) {
-        std::visit([&](const auto& kernel) { setWallParticles<decltype(wallPressure)::value>(system, begin, end, gravity, lambda, kernel); },
-                   system.models().kernel);
+        std::visit([&](const auto& kernel) { setWallParticles<decltype(wallPressure)::value>(view, begin, end, gravity, lambda, kernel); },
+                   view.kernel);
     });
     select(radialDirection_, [&](auto radial) {
         select(wallPressureCalibration, [&](auto wallPressure) {
             select(!repulsion_, [&](auto distancePartner) {
-                applyCorrection<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(system, gravity);
+                applyCorrection<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(view, gravity);
             });
         });
     });
-    if (repulsion_) addRepulsion(system, patchCells, *repulsion_);
+    if (repulsion_) addRepulsion(view, patchCells, *repulsion_);
 }
 
 template <int D, class Weighting>
 template <bool Radial, class Kernel>
-void DeficiencyCorrection<D, Weighting>::weighPairs(const FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const Kernel& kernel) {
+void DeficiencyCorrection<D, Weighting>::weighPairs(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel) {
     constexpr bool ownAreaIntegral = separateAreaIntegral(Radial);
-    const std::size_t n = system.fluid.ownedCount();
-    const Vec<D>* x = system.fluid.position.data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const double* spacing = system.walls.scalar("spacing").data();
-    const double* area = system.walls.scalar("area").data();
-    const double radius = system.supportRadius();
+    const std::size_t n = view.fluid.ownedCount();
+    const Vec<D>* x = view.fluid.position.data();
+    const Vec<D>* normal = view.walls[fields::normal].data();
+    const double* spacing = view.walls[fields::spacing].data();
+    const double* area = view.walls[fields::area].data();
+    const double radius = view.supportRadius;
     // Each fluid particle's weights, blend c_i and area integral g_i; the pairs are kept (in
     // this thread's list) for the correction, so the search and weights run once.
 #pragma omp parallel
@@ -208,24 +206,24 @@ void DeficiencyCorrection<D, Weighting>::weighPairs(const FluidSystem<D>& system
 
 template <int D, class Weighting>
 template <bool WallPressure, class Kernel>
-void DeficiencyCorrection<D, Weighting>::setWallParticles(FluidSystem<D>& system, std::size_t begin, std::size_t end, const Vec<D>& gravity,
+void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>& view, std::size_t begin, std::size_t end, const Vec<D>& gravity,
                                                           double lambda, const Kernel& kernel) {
     // The equation of state is read once per wall particle, not per pair: visited there.
-    const EquationOfState& eos = system.models().eos;
+    const EquationOfState& eos = view.eos;
     const double p0 = std::visit([](const auto& e) { return e.p0; }, eos);
-    const double* p = system.fluid.scalar("pressure").data();
-    const double* rho = system.fluid.scalar("density").data();
-    const Vec<D>* uncorrected = WallPressure ? nullptr : system.fluid.vector("uncorrectedAcceleration").data();
-    const Vec<D>* xWall = system.walls.position.data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const Vec<D>* aWall = system.walls.vector("acceleration").data();
-    double* C = system.walls.scalar("correctionCoefficient").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    double* rhoWall = system.walls.scalar("density").data();
-    const double radius = system.supportRadius();
+    const double* p = view.fluid[fields::pressure].data();
+    const double* rho = view.fluid[fields::density].data();
+    const Vec<D>* uncorrected = WallPressure ? nullptr : view.fluid[fields::uncorrectedAcceleration].data();
+    const Vec<D>* xWall = view.walls.position.data();
+    const Vec<D>* normal = view.walls[fields::normal].data();
+    const Vec<D>* aWall = view.walls[fields::acceleration].data();
+    double* C = view.walls[fields::correctionCoefficient].data();
+    double* pWall = view.walls[fields::pressure].data();
+    double* rhoWall = view.walls[fields::density].data();
+    const double radius = view.supportRadius;
     const bool literal = calibration_ == DeficiencyCalibration::Literal;
     const Vec<D>* areaIntegral = separateAreaIntegral(radialDirection_) ? areaIntegral_.data() : blend_.data();
-    const auto& fluidCells = system.fluidCells();
+    const auto& fluidCells = view.fluidCells;
     // Each wall particle's pressure, density, scale R_j and push.
 #pragma omp parallel
     {
@@ -270,18 +268,18 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(FluidSystem<D>& system
 
 template <int D, class Weighting>
 template <bool Radial, bool WallPressure, bool DistancePartner>
-void DeficiencyCorrection<D, Weighting>::applyCorrection(FluidSystem<D>& system, const Vec<D>& gravity) {
-    const std::size_t n = system.fluid.ownedCount();
-    const Vec<D>* v = system.fluid.vector("velocity").data();
-    const double* p = system.fluid.scalar("pressure").data();
-    const double* rho = system.fluid.scalar("density").data();
-    double* densityRate = system.continuity() ? system.fluid.scalar("densityRate").data() : nullptr;
-    Vec<D>* a = system.fluid.vector("acceleration").data();
-    Vec<D>* correction = system.fluid.vector("boundaryCorrection").data();
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const Vec<D>* aWall = system.walls.vector("acceleration").data();
-    const double* area = system.walls.scalar("area").data();
+void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity) {
+    const std::size_t n = view.fluid.ownedCount();
+    const Vec<D>* v = view.fluid[fields::velocity].data();
+    const double* p = view.fluid[fields::pressure].data();
+    const double* rho = view.fluid[fields::density].data();
+    double* densityRate = view.continuity ? view.fluid[fields::densityRate].data() : nullptr;
+    Vec<D>* a = view.fluid[fields::acceleration].data();
+    Vec<D>* correction = view.fluid[fields::boundaryCorrection].data();
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    const Vec<D>* normal = view.walls[fields::normal].data();
+    const Vec<D>* aWall = view.walls[fields::acceleration].data();
+    const double* area = view.walls[fields::area].data();
     const double* push = push_.data();
     const double* virtualDensity = virtualDensity_.data();
     // The blended correction, the virtual particles' compression, the distance partner.

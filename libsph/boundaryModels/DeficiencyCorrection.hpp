@@ -74,19 +74,20 @@ public:
     bool setsWallPressure() const override { return true; }  // p_j, extrapolated for the virtual particles
     bool needsUncorrectedAcceleration() const override { return calibration_ != DeficiencyCalibration::WallPressure; }
     std::string describe() const override;
-    void addFields(FluidSystem<D>& system) override;
-    void resume(const FluidSystem<D>& system, std::size_t begin, std::size_t end) override;
-    void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end, double t) override;
+    void addFields(const BoundaryView<D>& view) override;
+    void resume(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
+    void addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end) override;
 
 private:
     // The three passes of an evaluation: the fluid particles' weights and blends, the wall
     // particles' pressures and pushes, the correction applied to the fluid.
     template <bool Radial, class Kernel>
-    void weighPairs(const FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const Kernel& kernel);
+    void weighPairs(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel);
     template <bool WallPressure, class Kernel>
-    void setWallParticles(FluidSystem<D>& system, std::size_t begin, std::size_t end, const Vec<D>& gravity, double lambda, const Kernel& kernel);
+    void setWallParticles(const BoundaryView<D>& view, std::size_t begin, std::size_t end, const Vec<D>& gravity, double lambda,
+                          const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner>
-    void applyCorrection(FluidSystem<D>& system, const Vec<D>& gravity);
+    void applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity);
     // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
     static constexpr bool separateAreaIntegral(bool radial) { return Weighting::normalised || radial; }
     // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.

@@ -1,7 +1,6 @@
 #include "boundaryModels/DummyParticlesAdami2012.hpp"
 
 #include "boundaryModels/WallPressureExtrapolation.hpp"
-#include "physics/FluidSystem.hpp"
 
 #include <cmath>
 #include <limits>
@@ -18,19 +17,19 @@ std::string DummyParticlesAdami2012<D>::describe() const {
 }
 
 template <int D>
-void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) {
-    const Vec<D> gravity = system.gravityAt(t);
-    const Vec<D>* aWall = system.walls.hasVector("acceleration") ? system.walls.vector("acceleration").data() : nullptr;  // none: fixed walls
-    const Vec<D>* vFluid = system.fluid.vector("velocity").data();
-    const double* pFluid = system.fluid.scalar("pressure").data();
-    const double* rhoFluid = system.fluid.scalar("density").data();
-    const Vec<D>* xWall = system.walls.position.data();
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    double* rhoWall = system.walls.scalar("density").data();
-    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
-    const double radius = system.supportRadius();
-    const auto& cells = system.fluidCells();
+void DummyParticlesAdami2012<D>::updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) {
+    const Vec<D>& gravity = view.gravity;
+    const Vec<D>* aWall = view.walls.optionalData(fields::acceleration);  // none: fixed walls
+    const Vec<D>* vFluid = view.fluid[fields::velocity].data();
+    const double* pFluid = view.fluid[fields::pressure].data();
+    const double* rhoFluid = view.fluid[fields::density].data();
+    const Vec<D>* xWall = view.walls.position.data();
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    double* pWall = view.walls[fields::pressure].data();
+    double* rhoWall = view.walls[fields::density].data();
+    Vec<D>* vViscous = view.walls.optionalData(fields::viscousVelocity);
+    const double radius = view.supportRadius;
+    const auto& cells = view.fluidCells;
 
     std::visit(
         [&](const auto& kernel, const auto& eos) {
@@ -56,7 +55,7 @@ void DummyParticlesAdami2012<D>::updateWalls(FluidSystem<D>& system, std::size_t
                 rhoWall[w] = eos.density(std::max(pWall[w], eos.p0 - 0.999 * eos.stiffness()));
             }
         },
-        system.models().kernel, system.models().eos);
+        view.kernel, view.eos);
 }
 
 template class DummyParticlesAdami2012<1>;

@@ -25,7 +25,7 @@ public:
     // The first fluid row sits dx/2 from the wall surface, so the layers must reach support - dx/2 behind it.
     int minimumLayers(double support, double dx) const override { return layersFillingSupport(support, dx); }
     std::string describe() const override;
-    void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
+    void updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
 
 private:
     bool noSlip_;

@@ -1,7 +1,5 @@
 #include "boundaryModels/DynamicBoundaryCrespo2007.hpp"
 
-#include "physics/FluidSystem.hpp"
-
 #include <array>
 #include <cmath>
 #include <limits>
@@ -14,11 +12,11 @@ namespace {
 // The wall particles' pressure from their own density by the equation of state, never below
 // p(rho0) (a wall does not pull), and the velocity the viscous term sees: their own.
 template <int D>
-void pressureAndViscousVelocity(FluidSystem<D>& system, std::size_t begin, std::size_t end) {
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    const double* rhoWall = system.walls.scalar("density").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
+void pressureAndViscousVelocity(const BoundaryView<D>& view, std::size_t begin, std::size_t end) {
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    const double* rhoWall = view.walls[fields::density].data();
+    double* pWall = view.walls[fields::pressure].data();
+    Vec<D>* vViscous = view.walls.optionalData(fields::viscousVelocity);
     std::visit(
         [&](const auto& eos) {
 #pragma omp parallel for schedule(static)
@@ -27,29 +25,29 @@ void pressureAndViscousVelocity(FluidSystem<D>& system, std::size_t begin, std::
                 if (vViscous) vViscous[w] = vWall[w];
             }
         },
-        system.models().eos);
+        view.eos);
 }
 
 }  // namespace
 
 template <int D>
-void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double) {
-    const Vec<D>* vFluid = system.fluid.vector("velocity").data();
-    const double* mFluid = system.fluid.scalar("mass").data();
-    const Vec<D>* xWall = system.walls.position.data();
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    double* drhoWall = system.walls.scalar("densityRate").data();
-    const double radius2 = system.supportRadius() * system.supportRadius();
+void DynamicBoundaryCrespo2007<D>::updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) {
+    const Vec<D>* vFluid = view.fluid[fields::velocity].data();
+    const double* mFluid = view.fluid[fields::mass].data();
+    const Vec<D>* xWall = view.walls.position.data();
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    double* drhoWall = view.walls[fields::densityRate].data();
+    const double radius2 = view.supportRadius * view.supportRadius;
     // The wall particles in the order of their cell list, which has the fluid list's grid: the
     // particles of a wall cell share its stencil of fluid cells. Their fluid neighbours are listed
     // without a branch and, in 3D (many per wall particle), summed in vector lanes (AVX2: four
     // doubles), as in the pair loop (measured: doc/performance.md, "The dynamic boundary's pass in
     // lanes").
-    const auto& wallCells = system.wallCells();
+    const auto& wallCells = view.wallCells;
     constexpr std::size_t lanes = D == 3 ? 4 : 1;
 
     const auto densityRates = [&](const auto& kernel, auto wraps) {
-        const auto& fluidCells = system.fluidCells();  // a local of this function, so the loop in lanes can see it does not change
+        const auto& fluidCells = view.fluidCells;  // a local of this function, so the loop in lanes can see it does not change
 #pragma omp parallel
         {
             std::vector<std::uint32_t> neighbours(64);
@@ -95,13 +93,13 @@ void DynamicBoundaryCrespo2007<D>::updateWalls(FluidSystem<D>& system, std::size
     };
     std::visit(
         [&](const auto& kernel) {
-            if (system.fluidCells().anyPeriodic())
+            if (view.fluidCells.anyPeriodic())
                 densityRates(kernel, std::true_type{});
             else
                 densityRates(kernel, std::false_type{});
         },
-        system.models().kernel);
-    pressureAndViscousVelocity(system, begin, end);
+        view.kernel);
+    pressureAndViscousVelocity(view, begin, end);
 }
 
 template class DynamicBoundaryCrespo2007<1>;

@@ -22,7 +22,7 @@ public:
     // Fewer layers run (the wall pushes back through its density), but only a full support
     // gives the fluid near the wall its full kernel sum.
     int layersToGenerate(double support, double dx) const override { return layersFillingSupport(support, dx); }
-    void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
+    void updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
 };
 
 }  // namespace sph

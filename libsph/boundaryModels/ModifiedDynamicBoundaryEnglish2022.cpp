@@ -1,7 +1,5 @@
 #include "boundaryModels/ModifiedDynamicBoundaryEnglish2022.hpp"
 
-#include "physics/FluidSystem.hpp"
-
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
@@ -56,27 +54,27 @@ std::string ModifiedDynamicBoundaryEnglish2022<D>::describe() const {
 }
 
 template <int D>
-void ModifiedDynamicBoundaryEnglish2022<D>::addFields(FluidSystem<D>& system) {
-    if (!system.walls.hasInteger("layer"))
+void ModifiedDynamicBoundaryEnglish2022<D>::addFields(const BoundaryView<D>& view) {
+    if (!view.walls.has(fields::layer))
         throw FatalError(
             "error: modifiedDynamicBoundary needs the wall field 'layer' (each wall particle's layer behind the surface), "
             "which the wall particle file lacks; regenerate it with generateParticles");
 }
 
 template <int D>
-void ModifiedDynamicBoundaryEnglish2022<D>::updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double) {
-    const double* rhoFluid = system.fluid.scalar("density").data();
-    const double* mFluid = system.fluid.scalar("mass").data();
-    const Vec<D>* xWall = system.walls.position.data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const double* spacing = system.walls.scalar("spacing").data();
-    const int* layer = system.walls.integer("layer").data();
-    const Vec<D>* vWall = system.walls.vector("velocity").data();
-    double* rhoWall = system.walls.scalar("density").data();
-    double* pWall = system.walls.scalar("pressure").data();
-    Vec<D>* vViscous = system.walls.hasVector("viscousVelocity") ? system.walls.vector("viscousVelocity").data() : nullptr;
-    const double radius = system.supportRadius();
-    const auto& cells = system.fluidCells();
+void ModifiedDynamicBoundaryEnglish2022<D>::updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) {
+    const double* rhoFluid = view.fluid[fields::density].data();
+    const double* mFluid = view.fluid[fields::mass].data();
+    const Vec<D>* xWall = view.walls.position.data();
+    const Vec<D>* normal = view.walls[fields::normal].data();
+    const double* spacing = view.walls[fields::spacing].data();
+    const int* layer = view.walls[fields::layer].data();
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    double* rhoWall = view.walls[fields::density].data();
+    double* pWall = view.walls[fields::pressure].data();
+    Vec<D>* vViscous = view.walls.optionalData(fields::viscousVelocity);
+    const double radius = view.supportRadius;
+    const auto& cells = view.fluidCells;
     std::visit(
         [&](const auto& kernel, const auto& eos) {
 #pragma omp parallel for schedule(static)
@@ -93,7 +91,7 @@ void ModifiedDynamicBoundaryEnglish2022<D>::updateWalls(FluidSystem<D>& system, 
                 if (vViscous) vViscous[w] = vWall[w];
             }
         },
-        system.models().kernel, system.models().eos);
+        view.kernel, view.eos);
 }
 
 template class ModifiedDynamicBoundaryEnglish2022<1>;

@@ -35,8 +35,8 @@ public:
     std::string describe() const override;
     // The ghost nodes see the fluid, but the fluid near the wall needs the support filled.
     int minimumLayers(double support, double dx) const override { return layersFillingSupport(support, dx); }
-    void addFields(FluidSystem<D>& system) override;
-    void updateWalls(FluidSystem<D>& system, std::size_t begin, std::size_t end, double t) override;
+    void addFields(const BoundaryView<D>& view) override;
+    void updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
 
 private:
     double firstLayerOffset_;  // the wall surface's distance in front of the first layer, in spacings

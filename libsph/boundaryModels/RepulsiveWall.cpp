@@ -1,7 +1,5 @@
 #include "boundaryModels/RepulsiveWall.hpp"
 
-#include "physics/FluidSystem.hpp"
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -39,18 +37,18 @@ std::string describe(const RepulsionLaw& law) {
 }
 
 template <int D>
-void addRepulsion(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const RepulsionLaw& law) {
-    const std::size_t n = system.fluid.ownedCount();
-    const Vec<D>* x = system.fluid.position.data();
-    const double* mFluid = system.fluid.scalar("mass").data();
-    Vec<D>* a = system.fluid.vector("acceleration").data();
-    const double* mWall = system.walls.scalar("mass").data();
-    const double* spacing = system.walls.scalar("spacing").data();
+void addRepulsion(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const RepulsionLaw& law) {
+    const std::size_t n = view.fluid.ownedCount();
+    const Vec<D>* x = view.fluid.position.data();
+    const double* mFluid = view.fluid[fields::mass].data();
+    Vec<D>* a = view.fluid[fields::acceleration].data();
+    const double* mWall = view.walls[fields::mass].data();
+    const double* spacing = view.walls[fields::spacing].data();
     std::visit(
         [&](const auto& kernel, const auto& l) {
             using L = std::decay_t<decltype(l)>;
             const double inverseW0 = 1.0 / kernel.value(0.0);
-            double range = system.supportRadius();
+            double range = view.supportRadius;
             if constexpr (std::is_same_v<L, LennardJonesMonaghan1994>) range = l.range();
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
@@ -65,11 +63,11 @@ void addRepulsion(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, c
                 a[i] += sum;
             }
         },
-        system.models().kernel, law);
+        view.kernel, law);
 }
 
-template void addRepulsion<1>(FluidSystem<1>&, const CellLinkedList<1>&, const RepulsionLaw&);
-template void addRepulsion<2>(FluidSystem<2>&, const CellLinkedList<2>&, const RepulsionLaw&);
-template void addRepulsion<3>(FluidSystem<3>&, const CellLinkedList<3>&, const RepulsionLaw&);
+template void addRepulsion<1>(const BoundaryView<1>&, const CellLinkedList<1>&, const RepulsionLaw&);
+template void addRepulsion<2>(const BoundaryView<2>&, const CellLinkedList<2>&, const RepulsionLaw&);
+template void addRepulsion<3>(const BoundaryView<3>&, const CellLinkedList<3>&, const RepulsionLaw&);
 
 }  // namespace sph

@@ -23,7 +23,7 @@ std::string describe(const RepulsionLaw& law);
 
 // Adds the repulsion of the patch's particles (indexed by patchCells) to every fluid particle.
 template <int D>
-void addRepulsion(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, const RepulsionLaw& law);
+void addRepulsion(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const RepulsionLaw& law);
 
 template <int D>
 class RepulsiveWall : public BoundaryModel<D> {
@@ -31,8 +31,8 @@ public:
     explicit RepulsiveWall(RepulsionLaw law) : law_(law) {}
     bool actsThroughWallParticles() const override { return false; }
     std::string describe() const override { return sph::describe(law_); }
-    void addWallForces(FluidSystem<D>& system, const CellLinkedList<D>& patchCells, std::size_t, std::size_t, double) override {
-        addRepulsion(system, patchCells, law_);
+    void addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t, std::size_t) override {
+        addRepulsion(view, patchCells, law_);
     }
 
 private:

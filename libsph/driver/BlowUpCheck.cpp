@@ -11,8 +11,8 @@ namespace sph {
 template <int D>
 void checkFluidState(const ParticleSet<D>& fluid, const Vec<D>& lo, const Vec<D>& hi, FluidStateLimits limits, long step, double t) {
     const auto& x = fluid.position;
-    const auto& v = fluid.vector("velocity");
-    const auto& rho = fluid.scalar("density");
+    const auto& v = fluid[fields::velocity];
+    const auto& rho = fluid[fields::density];
     const double c0 = limits.c0, rho0 = limits.rho0;
     // Written without branches, so that NaN fails it; why a particle fails is asked only of the
     // one reported.

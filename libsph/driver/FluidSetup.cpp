@@ -27,17 +27,16 @@ DensityFormulation selectDensity(const Dictionary& dict) {
 }
 
 template <int D>
-void requireFields(const ParticleSet<D>& set, const std::filesystem::path& file, const std::vector<std::string>& scalars,
-                   const std::vector<std::string>& vectors, const std::vector<std::string>& integers) {
-    const auto missing = [&](const std::string& field) {
-        throw FatalError("error: particle file '" + file.string() + "' lacks the field '" + field + "' (regenerate it with generateParticles)");
+void requireFields(const ParticleSet<D>& set, const std::filesystem::path& file, std::initializer_list<ScalarField> scalars,
+                   std::initializer_list<VectorField> vectors, std::initializer_list<IntegerField> integers) {
+    const auto require = [&](auto field) {
+        if (!set.has(field))
+            throw FatalError("error: particle file '" + file.string() + "' lacks the field '" + std::string(field.name) +
+                             "' (regenerate it with generateParticles)");
     };
-    for (const auto& f : scalars)
-        if (!set.hasScalar(f)) missing(f);
-    for (const auto& f : vectors)
-        if (!set.hasVector(f)) missing(f);
-    for (const auto& f : integers)
-        if (!set.hasInteger(f)) missing(f);
+    for (auto field : scalars) require(field);
+    for (auto field : vectors) require(field);
+    for (auto field : integers) require(field);
 }
 
 // A corrupt or hand-edited state: every value must be a finite number, masses and densities positive.
@@ -52,9 +51,9 @@ void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& 
     for (const auto& [name, field] : set.scalars())
         for (std::size_t i = 0; i < field.values.size(); ++i) {
             if (!std::isfinite(field.values[i])) reject(i, fmt::format("a non-finite {}", name));
-            if ((name == "mass" || name == "density") && !(field.values[i] > 0.0))
+            if ((name == fields::mass.name || name == fields::density.name) && !(field.values[i] > 0.0))
                 reject(i, fmt::format("{} {:g}, not positive", name, field.values[i]));
-            if (name == "area" && field.values[i] < 0.0) reject(i, fmt::format("area {:g}, negative", field.values[i]));
+            if (name == fields::area.name && field.values[i] < 0.0) reject(i, fmt::format("area {:g}, negative", field.values[i]));
         }
     for (const auto& [name, field] : set.vectors())
         for (std::size_t i = 0; i < field.values.size(); ++i)
@@ -83,8 +82,8 @@ void requireDistinctParticles(const ParticleSet<D>& set, const std::filesystem::
         if (set.position[order[k]] == set.position[order[k - 1]])
             reject(fmt::format("particle ids {} and {} are at the same position ({:g})", set.globalId[order[k - 1]], set.globalId[order[k]],
                                fmt::join(set.position[order[k]].data(), set.position[order[k]].data() + D, " ")));
-    if (!set.hasVector("normal")) return;
-    const auto& normal = set.vector("normal");
+    if (!set.has(fields::normal)) return;
+    const auto& normal = set[fields::normal];
     for (std::size_t i = 0; i < set.size(); ++i)
         if (std::abs(normal[i].norm() - 1.0) > 1e-3)
             reject(fmt::format("wall particle id {} has the normal ({:g}) of length {:g} (valid: a unit vector)", set.globalId[i],
@@ -95,10 +94,10 @@ void requireDistinctParticles(const ParticleSet<D>& set, const std::filesystem::
 template <int D>
 void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDict, const std::vector<std::string>& patchNames,
                        const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support, double dx) {
-    if (!walls.hasInteger("layer")) return;
+    if (!walls.has(fields::layer)) return;
     std::vector<int> layers(patchNames.size(), 0);
-    const auto& patch = walls.integer("patch");
-    const auto& layer = walls.integer("layer");
+    const auto& patch = walls[fields::patch];
+    const auto& layer = walls[fields::layer];
     for (std::size_t w = 0; w < walls.size(); ++w) {
         int& most = layers[static_cast<std::size_t>(patch[w])];
         most = std::max(most, layer[w] + 1);
@@ -139,8 +138,8 @@ StartState<D> readStartState(const TimeDirectory& start, StateHeader& header) {
     const auto wallFile = start.path / "walls.vtu";
     state.fluid = readParticleFile<D>(fluidFile, "fluid", header);
     state.walls = readParticleFile<D>(wallFile, "walls", state.wallHeader);
-    requireFields(state.fluid, fluidFile, {"density", "mass"}, {"velocity"}, {});
-    requireFields(state.walls, wallFile, {"mass", "spacing"}, {"normal"}, {"patch"});
+    requireFields(state.fluid, fluidFile, {fields::density, fields::mass}, {fields::velocity}, {});
+    requireFields(state.walls, wallFile, {fields::mass, fields::spacing}, {fields::normal}, {fields::patch});
     requireValidValues(state.fluid, fluidFile);
     requireValidValues(state.walls, wallFile);
     requireDistinctParticles(state.fluid, fluidFile, true);
@@ -207,7 +206,7 @@ FluidModels<D> selectFluidModels(const Dictionary& schemes, Kernel<D> kernel, co
 template <int D>
 std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, const Dictionary& boundaryDict, const std::filesystem::path& wallFile,
                                     ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const ModelContext& context, double support) {
-    const auto& patchOfWall = walls.integer("patch");
+    const auto& patchOfWall = walls[fields::patch];
     for (int p : patchOfWall)
         if (p < 0 || static_cast<std::size_t>(p) >= patchNames.size())
             throw FatalError(fmt::format("error: '{}': wall patch index {} has no name in patchNames", wallFile.string(), p));
@@ -237,7 +236,7 @@ std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, 
     std::stable_sort(patchOrder.begin(), patchOrder.end(),
                      [&](std::size_t a, std::size_t b) { return rank(static_cast<int>(a)) < rank(static_cast<int>(b)); });
     std::vector<Patch<D>> patches;
-    const auto& sortedPatch = walls.integer("patch");
+    const auto& sortedPatch = walls[fields::patch];
     std::size_t begin = 0;
     for (std::size_t p : patchOrder) {
         Patch<D> patch;

@@ -28,7 +28,7 @@ void restoreRestartState(FluidSystem<D>& system, TimeIntegrator<D>& integrator, 
     for (Patch<D>& patch : system.patches) {
         if (const auto saved = header.restart.find(motionKey(patch.name)); patch.motion && saved != header.restart.end())
             patch.motion->restore(saved->second, source);
-        if (writtenBySolver) patch.model->resume(system, patch.begin, patch.end);
+        if (writtenBySolver) patch.model->resume(system.boundaryView(t), patch.begin, patch.end);
     }
     const bool sameIntegrator = header.integrator == integratorType;
     const auto saved = header.restart.find(integratorKey);
@@ -41,13 +41,13 @@ void restoreRestartState(FluidSystem<D>& system, TimeIntegrator<D>& integrator, 
     std::vector<std::vector<double>> densityRates;
     const auto densitySets = evolvedDensitySets(system);
     if (keepWrittenRates) {
-        acceleration = system.fluid.vector("acceleration");
-        for (ParticleSet<D>* set : densitySets) densityRates.push_back(set->scalar("densityRate"));
+        acceleration = system.fluid[fields::acceleration];
+        for (ParticleSet<D>* set : densitySets) densityRates.push_back((*set)[fields::densityRate]);
     }
     system.evaluateRates(t);
     if (keepWrittenRates) {
-        system.fluid.vector("acceleration") = std::move(acceleration);
-        for (std::size_t s = 0; s < densitySets.size(); ++s) densitySets[s]->scalar("densityRate") = std::move(densityRates[s]);
+        system.fluid[fields::acceleration] = std::move(acceleration);
+        for (std::size_t s = 0; s < densitySets.size(); ++s) (*densitySets[s])[fields::densityRate] = std::move(densityRates[s]);
     }
 }
 

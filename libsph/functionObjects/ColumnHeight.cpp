@@ -19,8 +19,8 @@ ColumnHeight<D>::ColumnHeight(const Dictionary& dict, const FunctionObjectContex
     const Vec<D> g = system.gravityAt(std::numeric_limits<double>::max());
     if (!(g.norm() > 0.0)) dict.fail("type", "columnHeight measures against gravity, and this case has none");
     up_ = -g.normalized();
-    const auto& m = system.fluid.scalar("mass");
-    const auto& rho = system.fluid.scalar("density");
+    const auto& m = system.fluid[fields::mass];
+    const auto& rho = system.fluid[fields::density];
     halfSpacing_ = system.fluid.size() > 0 ? 0.5 * std::pow(m[0] / rho[0], 1.0 / D) : 0.0;
     std::string header = "# time";
     for (std::size_t k = 0; k < points_.size(); ++k) header += fmt::format(" h({:g})", fmt::join(points_[k], " "));

@@ -34,11 +34,11 @@ void FieldErrorNorm<D>::accumulate(const FluidSystem<D>& system, double t, Error
     const auto& x = system.fluid.position;
     const std::size_t n = system.fluid.ownedCount();
     if (field_ == "U") {
-        const auto& v = system.fluid.vector("velocity");
+        const auto& v = system.fluid[fields::velocity];
         for (std::size_t i = 0; i < n; ++i) accumulator.add((v[i] - solution_->velocity(x[i], t)).norm());
         return;
     }
-    const auto& p = system.fluid.scalar("pressure");
+    const auto& p = system.fluid[fields::pressure];
     const FlowConstants<D> constants{rho0_, system.gravityAt(t)};
     std::vector<double> exact(n);
     double meanDifference = 0.0;

@@ -15,8 +15,8 @@ FieldTotals<D>::FieldTotals(const Dictionary&, const FunctionObjectContext<D>& c
 
 template <int D>
 void FieldTotals<D>::execute(const FluidSystem<D>& system, double t) {
-    const auto& m = system.fluid.scalar("mass");
-    const auto& v = system.fluid.vector("velocity");
+    const auto& m = system.fluid[fields::mass];
+    const auto& v = system.fluid[fields::velocity];
     double mass = 0.0, energy = 0.0;
     Vec<D> momentum = Vec<D>::Zero();
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) {

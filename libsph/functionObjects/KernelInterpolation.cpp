@@ -10,10 +10,10 @@ namespace sph {
 
 template <int D>
 InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>& x) {
-    const double* m = system.fluid.scalar("mass").data();
-    const double* rho = system.fluid.scalar("density").data();
-    const double* p = system.fluid.scalar("pressure").data();
-    const Vec<D>* v = system.fluid.vector("velocity").data();
+    const double* m = system.fluid[fields::mass].data();
+    const double* rho = system.fluid[fields::density].data();
+    const double* p = system.fluid[fields::pressure].data();
+    const Vec<D>* v = system.fluid[fields::velocity].data();
     InterpolatedFluid<D> result;
     std::visit(
         [&](const auto& kernel) {

@@ -35,13 +35,13 @@ std::string PatchForces<D>::describe() const {
 
 template <int D>
 std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
-    const auto& v = system.fluid.vector("velocity");
-    const auto& m = system.fluid.scalar("mass");
-    const auto& rho = system.fluid.scalar("density");
-    const auto& p = system.fluid.scalar("pressure");
+    const auto& v = system.fluid[fields::velocity];
+    const auto& m = system.fluid[fields::mass];
+    const auto& rho = system.fluid[fields::density];
+    const auto& p = system.fluid[fields::pressure];
     const auto& walls = system.walls;
-    const WallPairFields<D> wall{walls.scalar("mass").data(), walls.scalar("pressure").data(), walls.scalar("density").data(),
-                                 system.viscous() ? walls.vector("viscousVelocity").data() : nullptr};
+    const WallPairFields<D> wall{walls[fields::mass].data(), walls[fields::pressure].data(), walls[fields::density].data(),
+                                 system.viscous() ? walls[fields::viscousVelocity].data() : nullptr};
     const double eta2 = viscousRegularisation(system.smoothingLength());
     std::vector<Vec<D>> result;
     std::visit(

@@ -17,8 +17,8 @@ template <int D>
 std::size_t WallPenetrations<D>::count(const FluidSystem<D>& system) {
     const std::size_t n = system.fluid.ownedCount();
     const Vec<D>* x = system.fluid.position.data();
-    const Vec<D>* normal = system.walls.vector("normal").data();
-    const int* layer = system.walls.hasInteger("layer") ? system.walls.integer("layer").data() : nullptr;
+    const Vec<D>* normal = system.walls[fields::normal].data();
+    const int* layer = system.walls.optionalData(fields::layer);
     // The wall-particle patches share one cell list; each wall-force patch has its own.
     std::vector<const CellLinkedList<D>*> lists{&system.wallCells()};
     for (const Patch<D>& patch : system.patches)

@@ -27,14 +27,14 @@ WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const Functi
 
     // The patch's particles on the wall surface, where it was generated.
     const auto& walls = system.walls;
-    const auto& x0 = walls.hasVector("initialPosition") ? walls.vector("initialPosition") : walls.position;
-    const std::vector<int>* layer = walls.hasInteger("layer") ? &walls.integer("layer") : nullptr;
+    const auto& x0 = walls.has(fields::initialPosition) ? walls[fields::initialPosition] : walls.position;
+    const std::vector<int>* layer = walls.has(fields::layer) ? &walls[fields::layer] : nullptr;
     std::vector<std::size_t> surface;
     double spacing = 0.0;
     for (std::size_t j = patch->begin; j < patch->end; ++j)
         if (!layer || (*layer)[j] == 0) {
             surface.push_back(j);
-            if (walls.hasScalar("spacing")) spacing = std::max(spacing, walls.scalar("spacing")[j]);
+            if (walls.has(fields::spacing)) spacing = std::max(spacing, walls[fields::spacing][j]);
         }
     if (surface.empty()) dict.fail("patch", fmt::format("patch '{}' has no wall particles", patchName_));
     size_ = dict.getPositiveOrDefault("size", spacing);
@@ -79,9 +79,9 @@ std::string WallPressureSensors<D>::describe() const {
 
 template <int D>
 double WallPressureSensors<D>::extrapolatedPressure(const FluidSystem<D>& system, std::size_t wall, double t) const {
-    const double* p = system.fluid.scalar("pressure").data();
-    const double* rho = system.fluid.scalar("density").data();
-    const Vec<D> wallAcceleration = system.walls.hasVector("acceleration") ? system.walls.vector("acceleration")[wall] : Vec<D>::Zero();
+    const double* p = system.fluid[fields::pressure].data();
+    const double* rho = system.fluid[fields::density].data();
+    const Vec<D> wallAcceleration = system.walls.has(fields::acceleration) ? system.walls[fields::acceleration][wall] : Vec<D>::Zero();
     WallPressureExtrapolation<D> extrapolation;
     std::visit(
         [&](const auto& kernel) {
@@ -95,8 +95,8 @@ double WallPressureSensors<D>::extrapolatedPressure(const FluidSystem<D>& system
 
 template <int D>
 std::vector<double> WallPressureSensors<D>::pressures(const FluidSystem<D>& system, double t) const {
-    const auto& wallPressure = system.walls.scalar("pressure");
-    const std::vector<double>* area = system.walls.hasScalar("area") ? &system.walls.scalar("area") : nullptr;
+    const auto& wallPressure = system.walls[fields::pressure];
+    const std::vector<double>* area = system.walls.has(fields::area) ? &system.walls[fields::area] : nullptr;
     std::vector<double> result;
     for (const auto& members : members_) {
         double weighted = 0.0, areaSum = 0.0, plain = 0.0;

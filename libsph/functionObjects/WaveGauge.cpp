@@ -43,8 +43,8 @@ WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& 
         lengths_.push_back(dict.getPositiveOrDefault("length", reach));
     }
     if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, system).motion.get();
-    const auto& m = system.fluid.scalar("mass");
-    const auto& rho = system.fluid.scalar("density");
+    const auto& m = system.fluid[fields::mass];
+    const auto& rho = system.fluid[fields::density];
     const double spacing = system.fluid.size() > 0 ? std::pow(m[0] / rho[0], 1.0 / D) : system.smoothingLength();
     step_ = 0.25 * spacing;
     std::string header = "# time";

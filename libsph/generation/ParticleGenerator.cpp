@@ -291,10 +291,10 @@ ParticleSet<D> fluidParticleSet(const GeneratedFluid<D>& generated, const Initia
     const double rho0 = state.properties.rho0;
     ParticleSet<D> fluidSet("fluid");
     fluidSet.resize(generated.positions.size());
-    auto& velocity = fluidSet.addVector("velocity", Vec<D>::Zero());
-    auto& density = fluidSet.addScalar("density", rho0);
-    auto& pressure = fluidSet.addScalar("pressure", 0.0);
-    fluidSet.addScalar("mass", rho0 * std::pow(dx, D));
+    auto& velocity = fluidSet.add(fields::velocity, Vec<D>::Zero());
+    auto& density = fluidSet.add(fields::density, rho0);
+    auto& pressure = fluidSet.add(fields::pressure, 0.0);
+    fluidSet.add(fields::mass, rho0 * std::pow(dx, D));
     for (std::size_t i = 0; i < generated.positions.size(); ++i) {
         fluidSet.position[i] = generated.positions[i];
         fluidSet.globalId[i] = static_cast<std::int64_t>(i);
@@ -317,14 +317,14 @@ ParticleSet<D> wallParticleSet(const GeneratedWalls<D>& generated, const Initial
     const WallPatchParticles<D>& all = generated.particles;
     ParticleSet<D> walls("walls");
     walls.resize(all.positions.size());
-    auto& normal = walls.addVector("normal", Vec<D>::Zero());
-    auto& spacing = walls.addScalar("spacing", dx);
-    auto& area = walls.addScalar("area", 0.0);
-    auto& wallDensity = walls.addScalar("density", rho0);
-    auto& wallPressure = walls.addScalar("pressure", 0.0);
-    walls.addScalar("mass", rho0 * std::pow(dx, D));
-    auto& patch = walls.addInteger("patch", 0);
-    auto& layer = walls.addInteger("layer", 0);
+    auto& normal = walls.add(fields::normal, Vec<D>::Zero());
+    auto& spacing = walls.add(fields::spacing, dx);
+    auto& area = walls.add(fields::area, 0.0);
+    auto& wallDensity = walls.add(fields::density, rho0);
+    auto& wallPressure = walls.add(fields::pressure, 0.0);
+    walls.add(fields::mass, rho0 * std::pow(dx, D));
+    auto& patch = walls.add(fields::patch, 0);
+    auto& layer = walls.add(fields::layer, 0);
     for (std::size_t k = 0; k < all.positions.size(); ++k) {
         walls.position[k] = all.positions[k];
         walls.globalId[k] = static_cast<std::int64_t>(k);

@@ -202,13 +202,13 @@ ParticleSet<D> readParticleFile(const std::filesystem::path& file, const std::st
             hasIds = true;
             for (vtkIdType i = 0; i < n; ++i) set.globalId[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(array->GetTuple1(i));
         } else if (vtkIntArray::SafeDownCast(array)) {
-            auto& values = set.addInteger(name, 0);
+            auto& values = set.add(IntegerField{name}, 0);
             for (vtkIdType i = 0; i < n; ++i) values[static_cast<std::size_t>(i)] = static_cast<int>(array->GetTuple1(i));
         } else if (array->GetNumberOfComponents() == 1) {
-            auto& values = set.addScalar(name, 0.0);
+            auto& values = set.add(ScalarField{name}, 0.0);
             for (vtkIdType i = 0; i < n; ++i) values[static_cast<std::size_t>(i)] = array->GetTuple1(i);
         } else if (array->GetNumberOfComponents() == 3) {
-            auto& values = set.addVector(name, Vec<D>::Zero());
+            auto& values = set.add(VectorField{name}, Vec<D>::Zero());
             for (vtkIdType i = 0; i < n; ++i) {
                 const double* t = array->GetTuple3(i);
                 for (int d = 0; d < D; ++d) values[static_cast<std::size_t>(i)][d] = t[d];

@@ -13,12 +13,12 @@ namespace {
 // neighbours; a closed curve wraps around. Exact for any deformation of a curved wall.
 // False, with nothing changed, when storage order is not the order along the wall (boxWalls).
 bool surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end) {
-    const auto& layer = walls.integer("layer");
-    auto& normal = walls.vector("normal");
-    auto& spacing = walls.scalar("spacing");
-    auto& area = walls.scalar("area");
-    const auto& n0 = walls.vector("initialNormal");
-    const auto& x0 = walls.vector("initialPosition");
+    const auto& layer = walls[fields::layer];
+    auto& normal = walls[fields::normal];
+    auto& spacing = walls[fields::spacing];
+    auto& area = walls[fields::area];
+    const auto& n0 = walls[fields::initialNormal];
+    const auto& x0 = walls[fields::initialPosition];
     std::vector<std::size_t> surface;
     for (std::size_t w = begin; w < end; ++w)
         if (layer[w] == 0) surface.push_back(w);
@@ -51,14 +51,14 @@ bool surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end
 // same ratio to the power 1/(D-1).
 template <int D>
 void surfaceFromMotion(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t) {
-    if (!walls.hasScalar("initialArea")) return;  // walls without spacings or areas: normals only matter
-    const auto& x0 = walls.vector("initialPosition");
-    const auto& n0 = walls.vector("initialNormal");
-    const auto& area0 = walls.scalar("initialArea");
-    const auto& spacing0 = walls.scalar("initialSpacing");
-    auto& normal = walls.vector("normal");
-    auto& spacing = walls.scalar("spacing");
-    auto& area = walls.scalar("area");
+    if (!walls.has(fields::initialArea)) return;  // walls without spacings or areas: normals only matter
+    const auto& x0 = walls[fields::initialPosition];
+    const auto& n0 = walls[fields::initialNormal];
+    const auto& area0 = walls[fields::initialArea];
+    const auto& spacing0 = walls[fields::initialSpacing];
+    auto& normal = walls[fields::normal];
+    auto& spacing = walls[fields::spacing];
+    auto& area = walls[fields::area];
     for (std::size_t w = begin; w < end; ++w) {
         const Vec<D> stretched = motion.areaStretch(x0[w], n0[w], t);
         const double ratio = stretched.norm();
@@ -72,11 +72,11 @@ void surfaceFromMotion(ParticleSet<D>& walls, const PatchMotion<D>& motion, std:
 
 template <int D>
 void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t) {
-    const auto& x0 = walls.vector("initialPosition");
-    const auto& n0 = walls.vector("initialNormal");
-    auto& velocity = walls.vector("velocity");
-    auto& acceleration = walls.vector("acceleration");
-    auto& normal = walls.vector("normal");
+    const auto& x0 = walls[fields::initialPosition];
+    const auto& n0 = walls[fields::initialNormal];
+    auto& velocity = walls[fields::velocity];
+    auto& acceleration = walls[fields::acceleration];
+    auto& normal = walls[fields::normal];
     for (std::size_t w = begin; w < end; ++w) {
         const Kinematics<D> k = motion.at(x0[w], n0[w], t);
         walls.position[w] = k.position;
@@ -92,8 +92,8 @@ void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::siz
 
 template <int D>
 void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore, const Vec<D>& gravity, double t) {
-    const auto& acceleration = fluid.vector("acceleration");
-    const double* m = fluid.scalar("mass").data();
+    const auto& acceleration = fluid[fields::acceleration];
+    const double* m = fluid[fields::mass].data();
     const Vec<D> centreOfMass = body.centreOfMass();
     Vec<D> force = Vec<D>::Zero();
     double torque = 0.0;

@@ -39,16 +39,16 @@ public:
         n_ = cells_.pointCount();
         owned_ = s.fluid.ownedCount();
         x_ = s.fluid.position.data();
-        v_ = s.fluid.vector("velocity").data();
-        m_ = s.fluid.scalar("mass").data();
-        rho_ = s.fluid.scalar("density").data();
-        p_ = s.fluid.scalar("pressure").data();
-        a_ = s.fluid.vector("acceleration").data();
-        drho_ = Terms::continuity ? s.fluid.scalar("densityRate").data() : nullptr;
+        v_ = s.fluid[fields::velocity].data();
+        m_ = s.fluid[fields::mass].data();
+        rho_ = s.fluid[fields::density].data();
+        p_ = s.fluid[fields::pressure].data();
+        a_ = s.fluid[fields::acceleration].data();
+        drho_ = Terms::continuity ? s.fluid[fields::densityRate].data() : nullptr;
         bodyForce_ = Terms::pressure ? gravity : Vec<D>::Zero();
-        wallVelocity_ = s.walls.vector("velocity").data();
-        wall_ = {s.walls.scalar("mass").data(), s.walls.scalar("pressure").data(), s.walls.scalar("density").data(),
-                 Viscosity::enabled ? s.walls.vector("viscousVelocity").data() : nullptr};
+        wallVelocity_ = s.walls[fields::velocity].data();
+        wall_ = {s.walls[fields::mass].data(), s.walls[fields::pressure].data(), s.walls[fields::density].data(),
+                 Viscosity::enabled ? s.walls[fields::viscousVelocity].data() : nullptr};
         radius_ = s.supportRadius();
         eta2_ = viscousRegularisation(s.smoothingLength());
         const auto threads = static_cast<std::size_t>(omp_get_max_threads());

@@ -113,6 +113,8 @@ public:
     const FluidModels<D>& models() const { return models_; }
     const Vec<D>& domainMin() const { return domainMin_; }
     const Vec<D>& domainMax() const { return domainMax_; }
+    // What a boundary model sees of the system at time t.
+    BoundaryView<D> boundaryView(double t);
 
     ParticleSet<D> fluid;
     ParticleSet<D> walls;

@@ -52,25 +52,25 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
       supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
       fluidCells_(domainMin, domainMax, supportRadius_, periodic),
       wallCells_(domainMin, domainMax, supportRadius_, periodic) {
-    fluid.addScalar("pressure", 0.0);
-    fluid.addVector("acceleration", Vec<D>::Zero());
-    if (continuity()) fluid.addScalar("densityRate", 0.0);
+    fluid.add(fields::pressure, 0.0);
+    fluid.add(fields::acceleration, Vec<D>::Zero());
+    if (continuity()) fluid.add(fields::densityRate, 0.0);
     if (shiftsParticles()) {
-        fluid.addVector("shiftingVelocity", Vec<D>::Zero());
-        fluid.addScalar("freeSurfaceLambda", 1.0, false);  // not written: recomputed every step
+        fluid.add(fields::shiftingVelocity, Vec<D>::Zero());
+        fluid.add(fields::freeSurfaceLambda, 1.0, false);  // not written: recomputed every step
     }
-    walls.addScalar("pressure", 0.0);
-    walls.addScalar("density", std::visit([](const auto& e) { return e.rho0; }, models_.eos));
+    walls.add(fields::pressure, 0.0);
+    walls.add(fields::density, std::visit([](const auto& e) { return e.rho0; }, models_.eos));
     // Written where a patch moves: its velocity is then worth colouring by (and zero elsewhere).
     wallsMove_ = std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.motion != nullptr; });
-    walls.addVector("velocity", Vec<D>::Zero(), wallsMove_);
-    if (!walls.hasScalar("area") && walls.hasScalar("spacing")) {
+    walls.add(fields::velocity, Vec<D>::Zero(), wallsMove_);
+    if (!walls.has(fields::area) && walls.has(fields::spacing)) {
         // A state written before walls had areas: each particle stands for spacing^(D-1).
-        auto& area = walls.addScalar("area", 0.0);
-        const auto& spacing = walls.scalar("spacing");
+        auto& area = walls.add(fields::area, 0.0);
+        const auto& spacing = walls[fields::spacing];
         for (std::size_t w = 0; w < walls.size(); ++w) area[w] = std::pow(spacing[w], D - 1);
     }
-    if (viscous()) walls.addVector("viscousVelocity", Vec<D>::Zero(), false);
+    if (viscous()) walls.add(fields::viscousVelocity, Vec<D>::Zero(), false);
     wallParticleEnd_ = patches.empty() ? walls.size() : 0;
     for (Patch<D>& patch : patches) {
         if (patch.model->actsThroughWallParticles()) {
@@ -82,20 +82,20 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         }
         wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
         keepsUncorrectedAcceleration_ = keepsUncorrectedAcceleration_ || patch.model->needsUncorrectedAcceleration();
-        patch.model->addFields(*this);
+        patch.model->addFields(boundaryView(0.0));
     }
-    if (wallDensityEvolves_) walls.addScalar("densityRate", 0.0);
-    if (keepsUncorrectedAcceleration_) fluid.addVector("uncorrectedAcceleration", Vec<D>::Zero());
+    if (wallDensityEvolves_) walls.add(fields::densityRate, 0.0);
+    if (keepsUncorrectedAcceleration_) fluid.add(fields::uncorrectedAcceleration, Vec<D>::Zero());
     if (wallsMove_) {
         // Motions are given from the initial configuration: written with the state, so a restart keeps it.
-        if (!walls.hasVector("initialPosition")) walls.addVector("initialPosition", Vec<D>::Zero()) = walls.position;
-        if (!walls.hasVector("initialNormal")) walls.addVector("initialNormal", Vec<D>::Zero()) = walls.vector("normal");
+        if (!walls.has(fields::initialPosition)) walls.add(fields::initialPosition, Vec<D>::Zero()) = walls.position;
+        if (!walls.has(fields::initialNormal)) walls.add(fields::initialNormal, Vec<D>::Zero()) = walls[fields::normal];
         const bool deforms = std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.motion && p.motion->deforms(); });
-        if (D >= 2 && deforms && walls.hasScalar("area")) {  // areaStretch scales the generated areas and spacings
-            if (!walls.hasScalar("initialArea")) walls.addScalar("initialArea", 0.0) = walls.scalar("area");
-            if (!walls.hasScalar("initialSpacing")) walls.addScalar("initialSpacing", 0.0) = walls.scalar("spacing");
+        if (D >= 2 && deforms && walls.has(fields::area)) {  // areaStretch scales the generated areas and spacings
+            if (!walls.has(fields::initialArea)) walls.add(fields::initialArea, 0.0) = walls[fields::area];
+            if (!walls.has(fields::initialSpacing)) walls.add(fields::initialSpacing, 0.0) = walls[fields::spacing];
         }
-        walls.addVector("acceleration", Vec<D>::Zero(), false);
+        walls.add(fields::acceleration, Vec<D>::Zero(), false);
     }
     wallCells_.markCellsNearPoints();  // the fluid-wall pass skips the fluid cells with no wall particle near
     wallCells_.build(walls.position, 0, wallParticleEnd_);
@@ -141,6 +141,11 @@ Vec<D> FluidSystem<D>::gravityAt(double t) const {
 }
 
 template <int D>
+BoundaryView<D> FluidSystem<D>::boundaryView(double t) {
+    return {fluid, walls, fluidCells_, wallCells_, models_.kernel, models_.eos, supportRadius_, continuity(), gravityAt(t)};
+}
+
+template <int D>
 void FluidSystem<D>::sortFluidByCell() {
     auto timer = timers.time(Stage::Neighbours);
     fluid.permute(fluidCells_.cellOrder(fluid.position));
@@ -160,8 +165,9 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
     }
     {
         auto timer = timers.time(Stage::Boundary);
+        const BoundaryView<D> view = boundaryView(t);
         for (Patch<D>& patch : patches)
-            if (!patch.cells) patch.model->updateWalls(*this, patch.begin, patch.end, t);
+            if (!patch.cells) patch.model->updateWalls(view, patch.begin, patch.end);
     }
     {
         auto timer = timers.time(Stage::Forces);
@@ -173,16 +179,17 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
 template <int D>
 void FluidSystem<D>::addWallForces(double t) {
     auto timer = timers.time(Stage::Boundary);
-    if (keepsUncorrectedAcceleration_) fluid.vector("uncorrectedAcceleration") = fluid.vector("acceleration");
-    if (fluid.hasVector("boundaryCorrection"))
-        std::fill(fluid.vector("boundaryCorrection").begin(), fluid.vector("boundaryCorrection").end(), Vec<D>::Zero());
-    auto& acceleration = fluid.vector("acceleration");
+    if (keepsUncorrectedAcceleration_) fluid[fields::uncorrectedAcceleration] = fluid[fields::acceleration];
+    if (fluid.has(fields::boundaryCorrection))
+        std::fill(fluid[fields::boundaryCorrection].begin(), fluid[fields::boundaryCorrection].end(), Vec<D>::Zero());
+    auto& acceleration = fluid[fields::acceleration];
+    const BoundaryView<D> view = boundaryView(t);
     for (Patch<D>& patch : patches) {
         if (!patch.cells) continue;
         const bool free = patch.motion && patch.motion->isFree();
         std::vector<Vec<D>> before;
         if (free) before = acceleration;
-        patch.model->addWallForces(*this, *patch.cells, patch.begin, patch.end, t);
+        patch.model->addWallForces(view, *patch.cells, patch.begin, patch.end);
         if (free) loadFreeBody(*patch.motion, fluid, before, gravityAt(t), t);
     }
 }
@@ -208,9 +215,9 @@ void FluidSystem<D>::computeSummationDensity() {
             } else {
                 const std::size_t n = fluid.ownedCount();
                 const Vec<D>* x = fluid.position.data();
-                const double* mass = fluid.scalar("mass").data();
-                const double* wallMass = walls.scalar("mass").data();
-                double* rho = fluid.scalar("density").data();
+                const double* mass = fluid[fields::mass].data();
+                const double* wallMass = walls[fields::mass].data();
+                double* rho = fluid[fields::density].data();
                 const double radius = supportRadius_;
 #pragma omp parallel for schedule(static)
                 for (std::size_t i = 0; i < n; ++i) {
@@ -231,8 +238,8 @@ void FluidSystem<D>::computeFluidPressure() {
     std::visit(
         [this](const auto& eos) {
             const std::size_t n = fluid.ownedCount();
-            const double* rho = fluid.scalar("density").data();
-            double* p = fluid.scalar("pressure").data();
+            const double* rho = fluid[fields::density].data();
+            double* p = fluid[fields::pressure].data();
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) p[i] = eos.pressure(rho[i]);
         },
@@ -283,8 +290,8 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
             } else if (terms == RateTerms::AllButViscous) {
                 dispatch.template operator()<false>(kernel, viscosity, diffusion);
             } else {
-                std::fill(fluid.vector("acceleration").begin(), fluid.vector("acceleration").end(), Vec<D>::Zero());
-                if (continuity()) std::fill(fluid.scalar("densityRate").begin(), fluid.scalar("densityRate").end(), 0.0);
+                std::fill(fluid[fields::acceleration].begin(), fluid[fields::acceleration].end(), Vec<D>::Zero());
+                if (continuity()) std::fill(fluid[fields::densityRate].begin(), fluid[fields::densityRate].end(), 0.0);
             }
         },
         models_.kernel, models_.viscosity, pairDiffusion);
@@ -298,8 +305,8 @@ bool FluidSystem<D>::viscous() const {
 template <int D>
 double FluidSystem<D>::stableTimeStep(double courant, bool viscousLimit) const {
     const std::size_t n = fluid.ownedCount();
-    const Vec<D>* v = fluid.vector("velocity").data();
-    const Vec<D>* a = fluid.vector("acceleration").data();
+    const Vec<D>* v = fluid[fields::velocity].data();
+    const Vec<D>* a = fluid[fields::acceleration].data();
     double maxSpeed2 = 0.0, maxAcceleration2 = 0.0;
 #pragma omp parallel for reduction(max : maxSpeed2, maxAcceleration2) schedule(static)
     for (std::size_t i = 0; i < n; ++i) {

@@ -239,7 +239,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
     auto timer = timers.time(Stage::Shifting);
     fluidCells_.build(fluid.position);
     const std::size_t n = fluid.ownedCount();
-    const Vec<D>* v = fluid.vector("velocity").data();
+    const Vec<D>* v = fluid[fields::velocity].data();
     double maxSpeed2 = 0.0;
 #pragma omp parallel for reduction(max : maxSpeed2) schedule(static)
     for (std::size_t i = 0; i < n; ++i) maxSpeed2 = std::max(maxSpeed2, v[i].squaredNorm());
@@ -254,7 +254,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
             } else {
                 const auto& cells = fluidCells_;
                 const bool anyWalls = walls.size() > 0;
-                const double* wallArea = anyWalls && walls.hasScalar("area") ? walls.scalar("area").data() : nullptr;
+                const double* wallArea = anyWalls ? walls.optionalData(fields::area) : nullptr;
                 const bool oneLayerWalls =
                     wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
                 ParticleShiftingScratch<D>& scratch = shiftingScratch_;
@@ -277,16 +277,16 @@ void FluidSystem<D>::shiftParticles(double dt) {
                                           models_.shifting.surface,
                                           fluid.position.data(),
                                           v,
-                                          fluid.scalar("mass").data(),
-                                          fluid.scalar("density").data(),
-                                          anyWalls ? walls.scalar("mass").data() : nullptr,
-                                          anyWalls ? walls.scalar("density").data() : nullptr,
-                                          anyWalls ? walls.vector("normal").data() : nullptr,
+                                          fluid[fields::mass].data(),
+                                          fluid[fields::density].data(),
+                                          anyWalls ? walls[fields::mass].data() : nullptr,
+                                          anyWalls ? walls[fields::density].data() : nullptr,
+                                          anyWalls ? walls[fields::normal].data() : nullptr,
                                           wallArea,
                                           oneLayerWalls,
                                           continuity(),
-                                          fluid.vector("shiftingVelocity").data(),
-                                          fluid.scalar("freeSurfaceLambda").data()};
+                                          fluid[fields::shiftingVelocity].data(),
+                                          fluid[fields::freeSurfaceLambda].data()};
 #pragma omp parallel for schedule(static)
                 for (std::size_t j = 0; j < cells.pointCount(); ++j) in.scratch.volume[j] = in.m[j] / in.rho[j];
                 auto& sumsOfThread = in.scratch.sumsOfThread;

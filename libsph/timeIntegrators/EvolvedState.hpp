@@ -34,9 +34,9 @@ struct StepStart {
 
     void save(FluidSystem<D>& system, const std::vector<ParticleSet<D>*>& densitySets) {
         position = system.fluid.position;
-        velocity = system.fluid.vector("velocity");
+        velocity = system.fluid[fields::velocity];
         density.resize(densitySets.size());
-        for (std::size_t s = 0; s < densitySets.size(); ++s) density[s] = densitySets[s]->scalar("density");
+        for (std::size_t s = 0; s < densitySets.size(); ++s) density[s] = (*densitySets[s])[fields::density];
     }
 };
 

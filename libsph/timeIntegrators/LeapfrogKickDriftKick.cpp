@@ -8,8 +8,8 @@ template <int D>
 double LeapfrogKickDriftKick<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
-    auto& v = fluid.vector("velocity");
-    const auto& a = fluid.vector("acceleration");
+    auto& v = fluid[fields::velocity];
+    const auto& a = fluid[fields::acceleration];
     const auto densitySets = evolvedDensitySets(system);
     const double halfDt = 0.5 * dt;
     {
@@ -20,8 +20,8 @@ double LeapfrogKickDriftKick<D>::takeStep(FluidSystem<D>& system, double t, doub
         addScaled(v, halfStepVelocity_, halfDt, a, n);  // predicted to the end of the step
         halfStepDensity_.resize(densitySets.size());
         for (std::size_t s = 0; s < densitySets.size(); ++s) {
-            auto& rho = densitySets[s]->scalar("density");
-            const auto& rate = densitySets[s]->scalar("densityRate");
+            auto& rho = (*densitySets[s])[fields::density];
+            const auto& rate = (*densitySets[s])[fields::densityRate];
             const std::size_t count = densitySets[s]->ownedCount();
             halfStepDensity_[s].resize(count);
             addScaled(halfStepDensity_[s], rho, halfDt, rate, count);
@@ -32,7 +32,7 @@ double LeapfrogKickDriftKick<D>::takeStep(FluidSystem<D>& system, double t, doub
     auto timer = system.timers.time(Stage::Integrator);
     addScaled(v, halfStepVelocity_, halfDt, a, n);
     for (std::size_t s = 0; s < densitySets.size(); ++s)
-        addScaled(densitySets[s]->scalar("density"), halfStepDensity_[s], halfDt, densitySets[s]->scalar("densityRate"),
+        addScaled((*densitySets[s])[fields::density], halfStepDensity_[s], halfDt, (*densitySets[s])[fields::densityRate],
                   densitySets[s]->ownedCount());
     return dt;
 }

@@ -20,8 +20,8 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, doubl
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& x = fluid.position;
-    auto& v = fluid.vector("velocity");
-    const auto& a = fluid.vector("acceleration");
+    auto& v = fluid[fields::velocity];
+    const auto& a = fluid[fields::acceleration];
     const auto densitySets = evolvedDensitySets(system);
     const double halfDt = 0.5 * dt;
     // y^{n+1/2} = y^n + dt/2 f(current rates); the positions take the velocity before it
@@ -31,7 +31,7 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, doubl
         addScaled(v, start_.velocity, halfDt, a, n);
         if (!positionsFirst) addScaled(x, start_.position, halfDt, v, n);
         for (std::size_t s = 0; s < densitySets.size(); ++s)
-            addScaled(densitySets[s]->scalar("density"), start_.density[s], halfDt, densitySets[s]->scalar("densityRate"),
+            addScaled((*densitySets[s])[fields::density], start_.density[s], halfDt, (*densitySets[s])[fields::densityRate],
                       densitySets[s]->ownedCount());
     };
     {
@@ -46,7 +46,7 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, doubl
         extrapolate(x, start_.position, n);
         extrapolate(v, start_.velocity, n);
         for (std::size_t s = 0; s < densitySets.size(); ++s)
-            extrapolate(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->ownedCount());
+            extrapolate((*densitySets[s])[fields::density], start_.density[s], densitySets[s]->ownedCount());
     }
     this->evaluate(system, t + dt);
     return dt;

@@ -72,8 +72,8 @@ std::vector<std::pair<double*, std::size_t>> SundialsState<D>::blocks(FluidSyste
     static_assert(sizeof(Vec<D>) == D * sizeof(double), "particle vectors must be packed doubles to be wrapped");
     const std::size_t n = system.fluid.ownedCount();
     std::vector<std::pair<double*, std::size_t>> result{{system.fluid.position.data()->data(), n * D},
-                                                        {system.fluid.vector("velocity").data()->data(), n * D}};
-    for (ParticleSet<D>* set : evolvedDensitySets(system)) result.emplace_back(set->scalar("density").data(), set->ownedCount());
+                                                        {system.fluid[fields::velocity].data()->data(), n * D}};
+    for (ParticleSet<D>* set : evolvedDensitySets(system)) result.emplace_back((*set)[fields::density].data(), set->ownedCount());
     return result;
 }
 
@@ -141,7 +141,7 @@ int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vect
             std::fill(positionRate, positionRate + n * D, 0.0);
         else
             std::memcpy(positionRate, N_VGetSubvectorArrayPointer_ManyVector(y, 1), n * D * sizeof(double));
-        const auto& a = system.fluid.vector("acceleration");
+        const auto& a = system.fluid[fields::acceleration];
         double* velocityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, 1);
         for (std::size_t i = 0; i < n; ++i) {
             if (!a[i].allFinite())
@@ -151,7 +151,7 @@ int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vect
         }
         sunindextype k = 2;
         for (ParticleSet<D>* set : evolvedDensitySets(system)) {
-            const auto& rate = set->scalar("densityRate");
+            const auto& rate = (*set)[fields::densityRate];
             double* densityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, k++);
             for (std::size_t i = 0; i < set->ownedCount(); ++i) {
                 if (!std::isfinite(rate[i]))
@@ -174,7 +174,7 @@ int SundialsState<D>::viscousJacobianTimes(FluidSystem<D>& system, double t, N_V
     try {
         load(system, y);
         const std::size_t n = system.fluid.ownedCount();
-        auto& v = system.fluid.vector("velocity");
+        auto& v = system.fluid[fields::velocity];
         const std::vector<Vec<D>> velocity = v;  // y may be the wrapped arrays themselves
         const double* wv = N_VGetSubvectorArrayPointer_ManyVector(w, 1);
         for (std::size_t i = 0; i < n; ++i)
@@ -182,7 +182,7 @@ int SundialsState<D>::viscousJacobianTimes(FluidSystem<D>& system, double t, N_V
         evaluate(t, RateTerms::ViscousOnly);
         v = velocity;
         N_VConst(0.0, Jw);
-        const auto& a = system.fluid.vector("acceleration");
+        const auto& a = system.fluid[fields::acceleration];
         const double* av = N_VGetSubvectorArrayPointer_ManyVector(fy, 1);
         double* Jv = N_VGetSubvectorArrayPointer_ManyVector(Jw, 1);
         for (std::size_t i = 0; i < n; ++i)

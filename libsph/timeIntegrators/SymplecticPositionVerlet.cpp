@@ -24,8 +24,8 @@ double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, d
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& x = fluid.position;
-    auto& v = fluid.vector("velocity");
-    const auto& a = fluid.vector("acceleration");
+    auto& v = fluid[fields::velocity];
+    const auto& a = fluid[fields::acceleration];
     const auto densitySets = evolvedDensitySets(system);
     const double halfDt = 0.5 * dt;
     {
@@ -34,7 +34,7 @@ double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, d
         addScaled(x, x, halfDt, v, n);
         addScaled(v, v, halfDt, a, n);
         for (ParticleSet<D>* set : densitySets)
-            addScaled(set->scalar("density"), set->scalar("density"), halfDt, set->scalar("densityRate"), set->ownedCount());
+            addScaled((*set)[fields::density], (*set)[fields::density], halfDt, (*set)[fields::densityRate], set->ownedCount());
         system.predictBodies(halfDt);
     }
     this->evaluate(system, t + halfDt);
@@ -44,7 +44,7 @@ double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, d
 #pragma omp parallel for schedule(static)
         for (std::size_t i = 0; i < n; ++i) x[i] = start_.position[i] + halfDt * (start_.velocity[i] + v[i]);
         for (std::size_t s = 0; s < densitySets.size(); ++s)
-            correctDensity(densitySets[s]->scalar("density"), start_.density[s], densitySets[s]->scalar("densityRate"), dt,
+            correctDensity((*densitySets[s])[fields::density], start_.density[s], (*densitySets[s])[fields::densityRate], dt,
                            densitySets[s]->ownedCount());
         system.correctBodies(dt);
     }

@@ -14,9 +14,9 @@ std::string VerletMonaghan1994<D>::describe() const {
 template <int D>
 void VerletMonaghan1994<D>::resume(const FluidSystem<D>& system, const std::vector<double>& saved) {
     // Without the previous level (a state from another integrator) the next step is an Euler step.
-    const bool previousLevelWritten = system.fluid.hasVector("previousVelocity") &&
-                                      (!system.continuity() || system.fluid.hasScalar("previousDensity")) &&
-                                      (!system.wallDensityEvolves() || system.walls.hasScalar("previousDensity"));
+    const bool previousLevelWritten = system.fluid.has(fields::previousVelocity) &&
+                                      (!system.continuity() || system.fluid.has(fields::previousDensity)) &&
+                                      (!system.wallDensityEvolves() || system.walls.has(fields::previousDensity));
     if (saved.size() == 1 && previousLevelWritten && saved[0] >= -1.0 && saved[0] < eulerEvery_) stepsSinceEuler_ = static_cast<int>(saved[0]);
 }
 
@@ -31,9 +31,9 @@ double VerletMonaghan1994<D>::takeStep(FluidSystem<D>& system, double t, double 
         auto& fluid = system.fluid;
         const std::size_t n = fluid.ownedCount();
         auto& x = fluid.position;
-        auto& v = fluid.vector("velocity");
-        const auto& a = fluid.vector("acceleration");
-        auto& vPrevious = fluid.addVector("previousVelocity", Vec<D>::Zero());
+        auto& v = fluid[fields::velocity];
+        const auto& a = fluid[fields::acceleration];
+        auto& vPrevious = fluid.add(fields::previousVelocity, Vec<D>::Zero());
         const double halfDt2 = 0.5 * dt * dt;
 #pragma omp parallel for schedule(static)
         for (std::size_t i = 0; i < n; ++i) {
@@ -43,9 +43,9 @@ double VerletMonaghan1994<D>::takeStep(FluidSystem<D>& system, double t, double 
             v[i] = older + reach * a[i];
         }
         for (ParticleSet<D>* set : evolvedDensitySets(system)) {
-            auto& rho = set->scalar("density");
-            auto& rhoPrevious = set->addScalar("previousDensity", 0.0);
-            const auto& rate = set->scalar("densityRate");
+            auto& rho = (*set)[fields::density];
+            auto& rhoPrevious = set->add(fields::previousDensity, 0.0);
+            const auto& rate = (*set)[fields::densityRate];
             const std::size_t count = set->ownedCount();
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < count; ++i) {

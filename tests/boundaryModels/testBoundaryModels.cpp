@@ -23,9 +23,9 @@ FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model, const 
     ParticleSet<2> fluid("fluid");
     const int nx = 20, ny = 25;
     fluid.resize(nx * ny);
-    auto& rho = fluid.addScalar("density", rho0);
-    fluid.addScalar("mass", rho0 * dx * dx);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    auto& rho = fluid.add(fields::density, rho0);
+    fluid.add(fields::mass, rho0 * dx * dx);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             const std::size_t k = static_cast<std::size_t>(j * nx + i);
@@ -34,12 +34,12 @@ FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model, const 
         }
     ParticleSet<2> walls("walls");
     walls.resize(3 * nx);
-    walls.addScalar("mass", rho0 * dx * dx);
-    walls.addVector("normal", Vec<2>(0.0, 1.0));
-    walls.addInteger("patch", 0);
-    walls.addVector("acceleration", wallAcceleration, false);
-    walls.addScalar("spacing", dx);
-    auto& layers = walls.addInteger("layer", 0);
+    walls.add(fields::mass, rho0 * dx * dx);
+    walls.add(fields::normal, Vec<2>(0.0, 1.0));
+    walls.add(fields::patch, 0);
+    walls.add(fields::acceleration, wallAcceleration, false);
+    walls.add(fields::spacing, dx);
+    auto& layers = walls.add(fields::layer, 0);
     for (int layer = 0; layer < 3; ++layer)
         for (int i = 0; i < nx; ++i) {
             walls.position[static_cast<std::size_t>(layer * nx + i)] = {(i + 0.5) * dx, -(layer + 0.5) * dx};
@@ -68,9 +68,9 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
     std::size_t count = 1;
     for (int d = 0; d < D; ++d) count *= perSide;
     fluid.resize(count);
-    fluid.addScalar("density", rho0);
-    auto& m = fluid.addScalar("mass", rho0 * std::pow(dx, D));
-    auto& v = fluid.addVector("velocity", Vec<D>::Zero());
+    fluid.add(fields::density, rho0);
+    auto& m = fluid.add(fields::mass, rho0 * std::pow(dx, D));
+    auto& v = fluid.add(fields::velocity, Vec<D>::Zero());
     for (std::size_t k = 0; k < count; ++k) {
         std::size_t rest = k;
         for (int d = 0; d < D; ++d) {
@@ -83,9 +83,9 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
     ParticleSet<D> walls("walls");
     const std::size_t perLayer = count / perSide;
     walls.resize(3 * perLayer);
-    walls.addScalar("mass", rho0 * std::pow(dx, D));
-    walls.addVector("normal", Vec<D>::Unit(D - 1));
-    walls.addInteger("patch", 0);
+    walls.add(fields::mass, rho0 * std::pow(dx, D));
+    walls.add(fields::normal, Vec<D>::Unit(D - 1));
+    walls.add(fields::patch, 0);
     for (std::size_t w = 0; w < walls.size(); ++w) {
         std::size_t rest = w % perLayer;
         for (int d = 0; d + 1 < D; ++d) {
@@ -101,7 +101,7 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
     FluidModels<D> models{kernel, TaitEquationOfState(rho0, 20.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{}, DensityFormulation::Continuity};
     FluidSystem<D> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), domain.min, domain.max, Vec<D>::Zero(), 0.0,
                           domain.periodic);
-    auto& wallVelocity = system.walls.vector("velocity");
+    auto& wallVelocity = system.walls[fields::velocity];
     for (auto& velocity : wallVelocity)
         for (int d = 0; d < D; ++d) velocity[d] = 0.2 * unit(random);
     omp_set_num_threads(2);
@@ -109,8 +109,8 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
     omp_set_num_threads(omp_get_num_procs());
 
     const auto& x = system.fluid.position;
-    const auto& vFluid = system.fluid.vector("velocity");
-    const auto& mFluid = system.fluid.scalar("mass");
+    const auto& vFluid = system.fluid[fields::velocity];
+    const auto& mFluid = system.fluid[fields::mass];
     double worst = 0.0, scale = 0.0;
     for (std::size_t w = 0; w < system.walls.size(); ++w) {
         double rate = 0.0;  // sum_f m_f (v_w - v_f) . grad_w W_wf
@@ -119,7 +119,7 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
             if (periodicX) r[0] -= period * std::round(r[0] / period);
             if (r.norm() < 2.0 * 1.3 * dx) rate += mFluid[f] * kernel.gradientFactor(r.norm()) * (wallVelocity[w] - vFluid[f]).dot(r);
         }
-        worst = std::max(worst, std::abs(system.walls.scalar("densityRate")[w] - rate));
+        worst = std::max(worst, std::abs(system.walls[fields::densityRate][w] - rate));
         scale = std::max(scale, std::abs(rate));
     }
     EXPECT_GT(scale, 0.0);
@@ -131,7 +131,7 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
 TEST(DummyParticlesAdami2012, ExtrapolatesTheHydrostaticPressureLinearlyIntoTheWall) {
     auto system = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
     system.evaluateRates(0.0);
-    const auto& p = system.walls.scalar("pressure");
+    const auto& p = system.walls[fields::pressure];
     // Away from the side edges the fluid pressure is exactly linear, so the extrapolation is
     // exact up to the small density variation (Tait, c0 = 20: rho varies by 1.2 %).
     for (std::size_t w = 0; w < system.walls.size(); ++w) {
@@ -141,7 +141,7 @@ TEST(DummyParticlesAdami2012, ExtrapolatesTheHydrostaticPressureLinearlyIntoTheW
         EXPECT_NEAR(p[w], rho0 * g * (H - x.y()), 0.015 * rho0 * g * H) << "wall particle at " << x.transpose();
     }
     // The inverse equation of state gives the wall density.
-    const auto& rhoWall = system.walls.scalar("density");
+    const auto& rhoWall = system.walls[fields::density];
     EXPECT_NEAR(rhoWall[0], TaitEquationOfState(rho0, 20.0, 7.0, 0.0).density(p[0]), 1e-9);
 }
 
@@ -153,8 +153,8 @@ TEST(DummyParticlesAdami2012, WallAccelerationEntersTheExtrapolation) {
     auto fixed = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
     fixed.evaluateRates(0.0);
     const std::size_t w = 10;  // first layer, middle
-    const auto& pFalling = falling.walls.scalar("pressure");
-    const auto& pFixed = fixed.walls.scalar("pressure");
+    const auto& pFalling = falling.walls[fields::pressure];
+    const auto& pFixed = fixed.walls[fields::pressure];
     // The difference is exactly the hydrostatic term g . sum_f rho_f (x_w - x_f) W_wf / sum_f W_wf.
     const WendlandC2<2> kernel(1.3 * dx);
     const Vec<2>& xw = fixed.walls.position[w];
@@ -164,7 +164,7 @@ TEST(DummyParticlesAdami2012, WallAccelerationEntersTheExtrapolation) {
         if (r >= fixed.supportRadius()) continue;
         const double W = kernel.value(r);
         weight += W;
-        moment += fixed.fluid.scalar("density")[f] * g * (fixed.fluid.position[f].y() - xw.y()) * W;
+        moment += fixed.fluid[fields::density][f] * g * (fixed.fluid.position[f].y() - xw.y()) * W;
     }
     EXPECT_NEAR(pFixed[w] - pFalling[w], moment / weight, 1e-9 * rho0 * g * H);
     EXPECT_GT(pFixed[w] - pFalling[w], 0.5 * rho0 * g * dx);
@@ -177,7 +177,7 @@ TEST(DummyParticlesAdami2012, HoldsTheColumnAgainstGravity) {
     // feels what a row with full fluid support feels (the bulk scheme's own residual, here
     // about 0.06 g from the lattice moment and the compressibility at c0 = 20), not the
     // deficiency of a free edge (of order g).
-    const auto& a = system.fluid.vector("acceleration");
+    const auto& a = system.fluid[fields::acceleration];
     const std::size_t nx = 20, bulkRow = 4;  // 4 dx up: beyond the wall's reach (support 2.6 dx)
     for (std::size_t i = 5; i < 15; ++i) EXPECT_NEAR(a[i].y(), a[bulkRow * nx + i].y(), 0.01 * g) << "column " << i;
 }
@@ -187,14 +187,14 @@ TEST(DynamicBoundaryCrespo2007, WallDensityRateFromApproachingFluid) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = {0.0, 0.015};
-    fluid.addScalar("density", rho0);
-    fluid.addScalar("mass", 0.4);
-    fluid.addVector("velocity", Vec<2>(0.0, -2.0));
+    fluid.add(fields::density, rho0);
+    fluid.add(fields::mass, 0.4);
+    fluid.add(fields::velocity, Vec<2>(0.0, -2.0));
     ParticleSet<2> walls("walls");
     walls.resize(1);
     walls.position[0] = {0.0, 0.0};
-    walls.addScalar("mass", 0.4);
-    walls.addScalar("density", 1005.0);
+    walls.add(fields::mass, 0.4);
+    walls.add(fields::density, 1005.0);
     std::vector<Patch<2>> patches(1);
     patches[0] = {"floor", 0, 1, std::make_unique<DynamicBoundaryCrespo2007<2>>(), std::nullopt, nullptr};
     const WendlandC2<2> kernel(1.3 * dx);
@@ -206,8 +206,8 @@ TEST(DynamicBoundaryCrespo2007, WallDensityRateFromApproachingFluid) {
     // d rho_w/dt = m_f (v_w - v_f) . grad_w W = m_f F(r) (v_w - v_f) . (x_w - x_f)
     const double expected = 0.4 * kernel.gradientFactor(0.015) * Vec<2>(0.0, 2.0).dot(Vec<2>(0.0, -0.015));
     EXPECT_GT(expected, 0.0);
-    EXPECT_NEAR(system.walls.scalar("densityRate")[0], expected, 1e-12 * std::abs(expected));
-    EXPECT_NEAR(system.walls.scalar("pressure")[0], eos.pressure(1005.0), 1e-9);
+    EXPECT_NEAR(system.walls[fields::densityRate][0], expected, 1e-12 * std::abs(expected));
+    EXPECT_NEAR(system.walls[fields::pressure][0], eos.pressure(1005.0), 1e-9);
 }
 
 TEST(DynamicBoundaryCrespo2007, WallDensityRatesEqualTheDirectSum) {
@@ -221,11 +221,11 @@ TEST(ModifiedDynamicBoundaryEnglish2022, ExtrapolatesALinearDensityExactlyIntoEv
     // at the column's side edges too, where the ghost nodes see fluid on one side only.
     auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));
     const auto linear = [](const Vec<2>& x) { return rho0 * (1.0 + 0.02 * (H - x.y()) / H + 0.01 * x.x() / H); };
-    auto& rhoFluid = system.fluid.scalar("density");
+    auto& rhoFluid = system.fluid[fields::density];
     for (std::size_t f = 0; f < system.fluid.size(); ++f) rhoFluid[f] = linear(system.fluid.position[f]);
     system.evaluateRates(0.0);
-    const auto& rhoWall = system.walls.scalar("density");
-    const auto& pWall = system.walls.scalar("pressure");
+    const auto& rhoWall = system.walls[fields::density];
+    const auto& pWall = system.walls[fields::pressure];
     const TaitEquationOfState eos(rho0, 20.0, 7.0, 0.0);
     for (std::size_t w = 0; w < system.walls.size(); ++w) {
         EXPECT_NEAR(rhoWall[w], linear(system.walls.position[w]), 1e-9 * rho0) << "wall particle at " << system.walls.position[w].transpose();
@@ -240,17 +240,17 @@ FluidSystem<2> oneFluidParticleOverAWall(bool wallsHaveLayers) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = {0.0, 0.02};
-    fluid.addScalar("density", 1010.0);
-    fluid.addScalar("mass", 0.4);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    fluid.add(fields::density, 1010.0);
+    fluid.add(fields::mass, 0.4);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     ParticleSet<2> walls("walls");
     walls.resize(2);
     walls.position[0] = {0.0, -0.5 * dx};
     walls.position[1] = {0.5, -0.5 * dx};
-    walls.addScalar("mass", 0.4);
-    walls.addScalar("spacing", dx);
-    walls.addVector("normal", Vec<2>(0.0, 1.0));
-    if (wallsHaveLayers) walls.addInteger("layer", 0);
+    walls.add(fields::mass, 0.4);
+    walls.add(fields::spacing, dx);
+    walls.add(fields::normal, Vec<2>(0.0, 1.0));
+    if (wallsHaveLayers) walls.add(fields::layer, 0);
     std::vector<Patch<2>> patches(1);
     patches[0] = {"floor", 0, 2, std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")), std::nullopt, nullptr};
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(rho0, 20.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
@@ -267,9 +267,9 @@ TEST(ModifiedDynamicBoundaryEnglish2022, TakesTheShepardDensityWhereTheGhostNode
     auto system = oneFluidParticleOverAWall(true);
     EXPECT_FALSE(system.wallDensityEvolves());
     system.evaluateRates(0.0);
-    EXPECT_NEAR(system.walls.scalar("density")[0], 1010.0, 1e-9);
-    EXPECT_EQ(system.walls.scalar("density")[1], rho0);
-    EXPECT_EQ(system.walls.scalar("pressure")[1], 0.0);
+    EXPECT_NEAR(system.walls[fields::density][0], 1010.0, 1e-9);
+    EXPECT_EQ(system.walls[fields::density][1], rho0);
+    EXPECT_EQ(system.walls[fields::pressure][1], 0.0);
 }
 
 TEST(ModifiedDynamicBoundaryEnglish2022, RefusesWallsWithoutLayers) {
@@ -286,7 +286,7 @@ TEST(ModifiedDynamicBoundaryEnglish2022, HoldsTheColumnAgainstGravity) {
     // As the dummy particles above: the bottom row feels what the bulk feels.
     auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));
     system.evaluateRates(0.0);
-    const auto& a = system.fluid.vector("acceleration");
+    const auto& a = system.fluid[fields::acceleration];
     const std::size_t nx = 20, bulkRow = 4;
     for (std::size_t i = 5; i < 15; ++i) EXPECT_NEAR(a[i].y(), a[bulkRow * nx + i].y(), 0.01 * g) << "column " << i;
 }

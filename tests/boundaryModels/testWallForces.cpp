@@ -30,10 +30,10 @@ ParticleSet<D> wallSet(const std::vector<Vec<D>>& positions, const Vec<D>& norma
     ParticleSet<D> walls("walls");
     walls.resize(positions.size());
     walls.position = positions;
-    walls.addScalar("mass", rho0 * std::pow(dx, D));
-    walls.addScalar("spacing", spacing);
-    walls.addVector("normal", normal);
-    walls.addInteger("patch", 0);
+    walls.add(fields::mass, rho0 * std::pow(dx, D));
+    walls.add(fields::spacing, spacing);
+    walls.add(fields::normal, normal);
+    walls.add(fields::patch, 0);
     return walls;
 }
 
@@ -43,9 +43,9 @@ ParticleSet<D> fluidSet(const std::vector<Vec<D>>& positions) {
     fluid.resize(positions.size());
     fluid.position = positions;
     for (std::size_t i = 0; i < positions.size(); ++i) fluid.globalId[i] = static_cast<std::int64_t>(i);
-    fluid.addScalar("density", rho0);
-    fluid.addScalar("mass", rho0 * std::pow(dx, D));
-    fluid.addVector("velocity", Vec<D>::Zero());
+    fluid.add(fields::density, rho0);
+    fluid.add(fields::mass, rho0 * std::pow(dx, D));
+    fluid.add(fields::velocity, Vec<D>::Zero());
     return fluid;
 }
 
@@ -103,7 +103,7 @@ TEST(MonaghanKajtar2009, HandComputedForceOnOneParticle) {
     const CubicSplineMonaghanLattanzio1985<2> kernel(h);
     const Vec<2> r = particle - wall;
     const double expected = 3.0 / 2.0 * kernel.value(r.norm()) / kernel.value(0.0) * 1.0 / r.squaredNorm();  // 2 m/(m + m) = 1
-    EXPECT_NEAR((s.fluid.vector("acceleration")[0] - expected * r).norm(), 0.0, 1e-12 * expected * r.norm());
+    EXPECT_NEAR((s.fluid[fields::acceleration][0] - expected * r).norm(), 0.0, 1e-12 * expected * r.norm());
 }
 
 TEST(MonaghanKajtar2009, ShiftedFormIsStrongerNearTheWallAndClipped) {
@@ -137,9 +137,9 @@ TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
                                h, Vec<1>(-1.0), Vec<1>(3.0));
         auto& s = *owner;
         s.evaluateRates(0.0);
-        const auto& before = s.fluid.vector("uncorrectedAcceleration");
-        const auto& correction = s.fluid.vector("boundaryCorrection");
-        const double C = s.walls.scalar("correctionCoefficient")[0];
+        const auto& before = s.fluid[fields::uncorrectedAcceleration];
+        const auto& correction = s.fluid[fields::boundaryCorrection];
+        const double C = s.walls[fields::correctionCoefficient][0];
         EXPECT_LT(before[0].x(), 0.0) << "the deficiency pulls the fluid towards the wall";
         EXPECT_LT(C, 0.0);
         // C = a_s / W(r_s) for the nearest particle: its corrected acceleration is zero.
@@ -160,8 +160,8 @@ TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstR
     // equal, and the calibrated reading cancels the sampled (first-row) deficiency.
     auto system = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
     auto& s = *system;
-    const auto& before = s.fluid.vector("uncorrectedAcceleration");
-    const auto& correction = s.fluid.vector("boundaryCorrection");
+    const auto& before = s.fluid[fields::uncorrectedAcceleration];
+    const auto& correction = s.fluid[fields::boundaryCorrection];
     const double deficiency = std::abs(before[100].y());
     ASSERT_GT(deficiency, 0.0);
     EXPECT_NEAR(before[100].y() + correction[100].y(), 0.0, 1e-12 * deficiency);  // first row, middle
@@ -173,8 +173,8 @@ TEST(DeficiencyCorrection, StraightWallIn2DLeavesNoNormalAccelerationOnTheFirstR
 TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) {
     auto system = straightWall<DeficiencyWeightingBoundaryIntegral>("deficiencyCorrectionBoundaryIntegral");
     auto& s = *system;
-    const auto& before = s.fluid.vector("uncorrectedAcceleration");
-    const auto& correction = s.fluid.vector("boundaryCorrection");
+    const auto& before = s.fluid[fields::uncorrectedAcceleration];
+    const auto& correction = s.fluid[fields::boundaryCorrection];
     EXPECT_NEAR(before[100].y() + correction[100].y(), 0.0, 1e-12 * std::abs(before[100].y()));
 }
 
@@ -232,8 +232,8 @@ TEST(DeficiencyCorrection, WorksIn3DOnAParticleSurfaceWithNormals) {
     auto& s = *owner;
     s.evaluateRates(0.0);
     const std::size_t middle = 15 * 30 + 15;  // first layer, centre of the floor
-    const auto& before = s.fluid.vector("uncorrectedAcceleration");
-    const auto& correction = s.fluid.vector("boundaryCorrection");
+    const auto& before = s.fluid[fields::uncorrectedAcceleration];
+    const auto& correction = s.fluid[fields::boundaryCorrection];
     ASSERT_LT(before[middle].z(), 0.0);
     EXPECT_NEAR(before[middle].z() + correction[middle].z(), 0.0, 1e-12 * std::abs(before[middle].z()));
     EXPECT_NEAR(correction[middle].x(), 0.0, 1e-12 * std::abs(before[middle].z()));
@@ -273,14 +273,14 @@ TEST(DeficiencyCorrection, WallPressureEmulatesVirtualParticlesAtUniformPressure
             model = std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(dict, contextFor(h), type);
         auto s = system<2>(fluidSet<2>(block(200, 20)), wallSet<2>(walls, Vec<2>(0, 1), dx), std::move(model), h, Vec<2>(-1, -1), Vec<2>(11, 2));
         s->evaluateRates(0.0);
-        EXPECT_FALSE(s->fluid.hasVector("uncorrectedAcceleration")) << "wallPressure reads no uncorrected acceleration";
-        EXPECT_DOUBLE_EQ(s->walls.scalar("pressure")[100], 1.0);
-        EXPECT_DOUBLE_EQ(s->walls.scalar("density")[100], rho0);
+        EXPECT_FALSE(s->fluid.has(fields::uncorrectedAcceleration)) << "wallPressure reads no uncorrected acceleration";
+        EXPECT_DOUBLE_EQ(s->walls[fields::pressure][100], 1.0);
+        EXPECT_DOUBLE_EQ(s->walls[fields::density][100], rho0);
         if (std::string(type) != "deficiencyCorrection") {
-            EXPECT_DOUBLE_EQ(s->walls.scalar("correctionCoefficient")[100], -2.0 / rho0);
+            EXPECT_DOUBLE_EQ(s->walls[fields::correctionCoefficient][100], -2.0 / rho0);
         }
-        const auto& a = s->fluid.vector("acceleration");
-        const auto& correction = s->fluid.vector("boundaryCorrection");
+        const auto& a = s->fluid[fields::acceleration];
+        const auto& correction = s->fluid[fields::boundaryCorrection];
         // Measured: 4.9 % (row 0) and 3.8 % (row 1) of the first row's deficiency for the
         // boundary-integral weighting, 4.5 % and 1.0 % for the published one.
         const double deficiency = (a[100] - correction[100]).y();  // the first row sits at d0: no penalty
@@ -304,13 +304,13 @@ TEST(DeficiencyCorrection, WallPressureHoldsAHydrostaticColumnBesideASideWall) {
     std::map<std::string, double> sinking;
     for (const char* calibration : {"wallPressure", "calibrated"}) {
         auto fluid = fluidSet<2>(block(40, 40));
-        for (std::size_t i = 0; i < fluid.size(); ++i) fluid.scalar("density")[i] = rho0 + rho0 * g * (H - fluid.position[i].y()) / (10.0 * 10.0);
+        for (std::size_t i = 0; i < fluid.size(); ++i) fluid[fields::density][i] = rho0 + rho0 * g * (H - fluid.position[i].y()) / (10.0 * 10.0);
         const auto dict = dictionary(std::string("type deficiencyCorrectionBoundaryIntegral; calibration ") + calibration + ";");
         auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(1, 0), dx),
                            std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(dict, contextFor(h), "c"), h,
                            Vec<2>(-1, -1), Vec<2>(3, 3), Vec<2>(0, -g));
         s->evaluateRates(0.0);
-        const auto& a = s->fluid.vector("acceleration");
+        const auto& a = s->fluid[fields::acceleration];
         double worst = 0.0;
         for (int row = 15; row < 25; ++row) worst = std::max(worst, std::abs(a[static_cast<std::size_t>(row * 40)].y()));
         sinking[calibration] = worst;
@@ -329,7 +329,7 @@ TEST(DeficiencyCorrection, FluidMovingTowardsTheWallIsCompressedAsByVirtualParti
     std::vector<Vec<2>> walls;
     for (int j = 0; j < 40; ++j) walls.push_back(Vec<2>(0.0, (j + 0.5) * dx));
     auto fluid = fluidSet<2>(block(20, 40));
-    for (auto& v : fluid.vector("velocity")) v = Vec<2>(-0.1, 0.0);
+    for (auto& v : fluid[fields::velocity]) v = Vec<2>(-0.1, 0.0);
     auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(1, 0), dx),
                        std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
                            dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
@@ -340,9 +340,9 @@ TEST(DeficiencyCorrection, FluidMovingTowardsTheWallIsCompressedAsByVirtualParti
         double expected = 0.0;
         for (const Vec<2>& w : walls) expected += rho0 * kernel.value((s->fluid.position[i] - w).norm()) * dx * 0.1;
         ASSERT_GT(expected, 0.0);
-        EXPECT_NEAR(s->fluid.scalar("densityRate")[i], expected, 1e-12 * expected);
+        EXPECT_NEAR(s->fluid[fields::densityRate][i], expected, 1e-12 * expected);
     }
-    EXPECT_EQ(s->fluid.scalar("densityRate")[20 * 20 + 10], 0.0) << "beyond the support of the wall";
+    EXPECT_EQ(s->fluid[fields::densityRate][20 * 20 + 10], 0.0) << "beyond the support of the wall";
 }
 
 TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstRowOn) {
@@ -358,21 +358,21 @@ TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstR
                                contextFor(h), "c"),
                            h, Vec<2>(-1, -1), Vec<2>(3, 1));
         s->evaluateRates(0.0);
-        const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];  // no fluid neighbour
+        const Vec<2> penalty = s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0];  // no fluid neighbour
         const double gap = 1.0 - height / (0.5 * dx);
         EXPECT_NEAR(penalty.y(), 3.0 / dx * gap * gap, 1e-12 * 3.0 / dx);
         EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * 3.0 / dx);
     }
     // The damper alone, on a particle closing on the wall at 0.2: gap^2 zeta (c0/d0) 0.2, c0 = 10.
     auto fluid = fluidSet<2>({Vec<2>(1.0, 0.25 * dx)});
-    fluid.vector("velocity")[0] = Vec<2>(0.3, -0.2);
+    fluid[fields::velocity][0] = Vec<2>(0.3, -0.2);
     auto s =
         system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
                   std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
                       dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; K 0; damping 2; }"), contextFor(h), "c"),
                   h, Vec<2>(-1, -1), Vec<2>(3, 1));
     s->evaluateRates(0.0);
-    const Vec<2> damper = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+    const Vec<2> damper = s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0];
     EXPECT_NEAR(damper.y(), 0.25 * 2.0 * 10.0 / (0.5 * dx) * 0.2, 1e-12 * 160.0);
     EXPECT_NEAR(damper.x(), 0.0, 1e-12 * 160.0);
 }
@@ -392,7 +392,7 @@ TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
                                contextFor(h), "c"),
                            h, Vec<2>(-1, -1), Vec<2>(3, 1));
         s->evaluateRates(0.0);
-        const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+        const Vec<2> penalty = s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0];
         const double springGap = std::max(0.0, 1.0 - height / (0.25 * dx));
         EXPECT_NEAR(penalty.y(), 3.0 / dx * springGap * springGap, 1e-12 * 3.0 / dx) << height / dx;
         EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * 3.0 / dx);
@@ -417,13 +417,13 @@ TEST(DeficiencyCorrection, DefaultSpringPushesOnlyWhileTheFluidClosesOnTheWallOr
     const double spring = 0.5 / dx * 0.6 * 0.6, damper = 0.8 * 0.8 * 10.0 / (0.5 * dx) * 0.2;
     for (const auto& [normalVelocity, expected] : {std::pair{0.0, spring}, std::pair{-0.2, spring + damper}, std::pair{0.2, 0.0}}) {
         auto fluid = fluidSet<2>({Vec<2>(1.0, 0.1 * dx)});
-        fluid.vector("velocity")[0] = Vec<2>(0.3, normalVelocity);
+        fluid[fields::velocity][0] = Vec<2>(0.3, normalVelocity);
         auto s = system<2>(std::move(fluid), wallSet<2>(walls, Vec<2>(0, 1), dx),
                            std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
                                dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
                            h, Vec<2>(-1, -1), Vec<2>(3, 1));
         s->evaluateRates(0.0);
-        const Vec<2> penalty = s->fluid.vector("acceleration")[0] - s->fluid.vector("boundaryCorrection")[0];
+        const Vec<2> penalty = s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0];
         EXPECT_NEAR(penalty.y(), expected, 1e-12 * (spring + damper)) << "normal velocity " << normalVelocity;
         EXPECT_NEAR(penalty.x(), 0.0, 1e-12 * (spring + damper));
     }
@@ -437,7 +437,7 @@ TEST(DeficiencyCorrection, NearestSampleTakesEveryTieSoALatticeWallGetsOneCoeffi
     for (int threads : {1, 3}) {
         omp_set_num_threads(threads);
         auto system = straightWall<DeficiencyWeightingJones2010>("deficiencyCorrection");
-        const auto& C = system->walls.scalar("correctionCoefficient");
+        const auto& C = system->walls[fields::correctionCoefficient];
         for (std::size_t j = 50; j < 150; ++j) EXPECT_NEAR(C[j], C[100], 1e-12 * std::abs(C[100])) << j;
         if (first.empty())
             first = C;

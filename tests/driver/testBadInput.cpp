@@ -4,6 +4,7 @@
 #include "driver/Simulation.hpp"
 #include "generation/ParticleGenerator.hpp"
 #include "io/ParticleFile.hpp"
+#include "kernels/Kernel.hpp"
 #include "support/CaseFixture.hpp"
 
 #include <gtest/gtest.h>
@@ -58,6 +59,16 @@ TEST(BadInput, UnknownModelListsTheValidNames) {
     expectContains(failureOf(dir), (dir / "system/sphSchemes").string() +
                                        ":1:28: error: unknown kernel 'wendland'; valid kernel names are:\n    cubicSpline\n    quinticSpline\n"
                                        "    wendlandC2\n    wendlandC4\n    wendlandC6");
+}
+
+TEST(BadInput, KernelThisBuildDidNotCompile) {
+    // Only a build with SPHKIT_KERNELS restricted has one (./Alltest's sanitizer build does).
+    if (sph::compiledKernel<sph::WendlandC6<2>>) GTEST_SKIP() << "this build compiles every kernel";
+    const auto dir = copyCase("damBreak2D");
+    replaceInFile(dir / "system/sphSchemes", "type wendlandC2;", "type wendlandC6;");
+    expectContains(failureOf(dir), (dir / "system/sphSchemes").string() +
+                                       ":1:28: error: kernel 'wendlandC6' is not compiled into this build (CMake option SPHKIT_KERNELS); "
+                                       "compiled kernels: ");
 }
 
 TEST(BadInput, UnknownBoundaryModel) {
@@ -185,12 +196,12 @@ TEST(BadInput, NonFiniteOrNonPositiveStateValues) {
     sph::StateHeader header;
     const auto original = sph::readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
     auto fluid = original;
-    fluid.scalar("density")[7] = std::numeric_limits<double>::quiet_NaN();
+    fluid[sph::fields::density][7] = std::numeric_limits<double>::quiet_NaN();
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
     expectContains(failureOf(dir, false), "error: particle file '" + (dir / "0/fluid.vtu").string() + "': particle id " +
                                               std::to_string(fluid.globalId[7]) + " has a non-finite density (a corrupt state file?)");
     fluid = original;
-    fluid.scalar("mass")[3] = -1.0;
+    fluid[sph::fields::mass][3] = -1.0;
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
     expectContains(failureOf(dir, false), "has mass -1, not positive (a corrupt state file?)");
 }
@@ -212,7 +223,7 @@ TEST(BadInput, DuplicateIdsCoincidentParticlesAndZeroNormals) {
     expectContains(failureOf(dir, false), "are at the same position (");
     sph::writeParticleFile(dir / "0/fluid.vtu", original, header);
     auto zeroNormal = walls;
-    zeroNormal.vector("normal")[3] = sph::Vec<2>::Zero();
+    zeroNormal[sph::fields::normal][3] = sph::Vec<2>::Zero();
     sph::writeParticleFile(dir / "0/walls.vtu", zeroNormal, wallHeader);
     expectContains(failureOf(dir, false), "wall particle id 3 has the normal (0 0) of length 0 (valid: a unit vector)");
 }

@@ -36,8 +36,8 @@ std::string blowUp(const std::string& integrator, const std::string& step) {
         sph::StateHeader header;
         const auto fluid = sph::readParticleFile<2>(latest.path / "fluid.vtu", "fluid", header);
         for (std::size_t i = 0; i < fluid.size(); ++i) {
-            EXPECT_TRUE(fluid.position[i].allFinite() && fluid.vector("velocity")[i].allFinite());
-            EXPECT_GT(fluid.scalar("density")[i], 500.0);
+            EXPECT_TRUE(fluid.position[i].allFinite() && fluid[sph::fields::velocity][i].allFinite());
+            EXPECT_GT(fluid[sph::fields::density][i], 500.0);
         }
         return error.what();
     }
@@ -70,8 +70,8 @@ TEST(BlowUp, CheckNamesTheFirstFaultyParticleAndItsFault) {
     const sph::Vec<2> lo(0.0, 0.0), hi(1.0, 1.0);
     sph::ParticleSet<2> fluid("fluid");
     fluid.resize(1000);
-    auto& velocity = fluid.addVector("velocity", sph::Vec<2>(1.0, -1.0));
-    auto& density = fluid.addScalar("density", 1000.0);
+    auto& velocity = fluid.add(sph::fields::velocity, sph::Vec<2>(1.0, -1.0));
+    auto& density = fluid.add(sph::fields::density, 1000.0);
     for (std::size_t i = 0; i < fluid.size(); ++i) {
         fluid.position[i] = sph::Vec<2>(0.001 * static_cast<double>(i), 0.5);
         fluid.globalId[i] = 5000 + static_cast<std::int64_t>(i);

@@ -48,9 +48,9 @@ void expectSameState(const std::filesystem::path& a, const std::filesystem::path
                 EXPECT_LE(largest, tolerance * scale) << part << " field " << name;
         };
         compare("position", setA.position, setB.position);
-        for (const auto& [name, field] : setA.scalars()) compare(name, field.values, setB.scalar(name));
-        for (const auto& [name, field] : setA.vectors()) compare(name, field.values, setB.vector(name));
-        for (const auto& [name, field] : setA.integers()) EXPECT_EQ(field.values, setB.integer(name)) << part << " " << name;
+        for (const auto& [name, field] : setA.scalars()) compare(name, field.values, setB[sph::ScalarField{name}]);
+        for (const auto& [name, field] : setA.vectors()) compare(name, field.values, setB[sph::VectorField{name}]);
+        for (const auto& [name, field] : setA.integers()) EXPECT_EQ(field.values, setB[sph::IntegerField{name}]) << part << " " << name;
     }
 }
 

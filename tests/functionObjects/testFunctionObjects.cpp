@@ -32,9 +32,9 @@ constexpr int n = 25;  // a 1 x 1 block of fluid in the domain [-0.1, 1.1]^2
 ParticleSet<2> blockFluid() {
     ParticleSet<2> fluid("fluid");
     fluid.resize(n * n);
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1000.0 * dx * dx);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1000.0 * dx * dx);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const std::size_t k = static_cast<std::size_t>(j * n + i);
@@ -47,14 +47,14 @@ ParticleSet<2> blockFluid() {
 // With `tankMotion`, one wall particle in a corner of the domain makes a patch "tank" that moves so.
 std::unique_ptr<FluidSystem<2>> makeBlock(std::unique_ptr<PatchMotion<2>> tankMotion = nullptr) {
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     std::vector<Patch<2>> patches;
     if (tankMotion) {
         walls.resize(1);
         walls.position[0] = Vec<2>(1.09, 1.09);
-        walls.addScalar("spacing", dx);
-        walls.addVector("normal", Vec<2>(0, 1));
-        walls.addInteger("patch", 0);
+        walls.add(fields::spacing, dx);
+        walls.add(fields::normal, Vec<2>(0, 1));
+        walls.add(fields::patch, 0);
         patches.resize(1);
         patches[0].name = "tank";
         patches[0].end = 1;
@@ -79,12 +79,12 @@ std::unique_ptr<FluidSystem<2>> makeBlockOnAFloor(std::unique_ptr<BoundaryModel<
         walls.position[static_cast<std::size_t>(k)] = Vec<2>(-0.08 + k * dx, 0.0);
         walls.globalId[static_cast<std::size_t>(k)] = k;
     }
-    walls.addScalar("mass", 1000.0 * dx * dx);
-    walls.addScalar("spacing", dx);
-    walls.addScalar("area", dx);
-    walls.addVector("normal", Vec<2>(0, 1));
-    walls.addInteger("patch", 0);
-    walls.addInteger("layer", 0);
+    walls.add(fields::mass, 1000.0 * dx * dx);
+    walls.add(fields::spacing, dx);
+    walls.add(fields::area, dx);
+    walls.add(fields::normal, Vec<2>(0, 1));
+    walls.add(fields::patch, 0);
+    walls.add(fields::layer, 0);
     std::vector<Patch<2>> patches(1);
     patches[0].name = "floor";
     patches[0].end = count;
@@ -95,7 +95,7 @@ std::unique_ptr<FluidSystem<2>> makeBlockOnAFloor(std::unique_ptr<BoundaryModel<
     auto system = std::make_unique<FluidSystem<2>>(std::move(models), blockFluid(), std::move(walls), std::move(patches), Vec<2>(-0.1, -0.1),
                                                    Vec<2>(1.1, 1.1), Vec<2>(0.0, -9.81), 0.0);
     system->evaluateRates(0.0);
-    auto& p = system->fluid.scalar("pressure");
+    auto& p = system->fluid[fields::pressure];
     for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 1000.0 * 9.81 * (1.0 - system->fluid.position[i].y());
     return system;
 }
@@ -131,7 +131,7 @@ std::string errorOf(const std::function<void()>& construct) {
 TEST(Probes, InterpolateALinearFieldExactlyAtASymmetricPointAndReadZeroWhenDry) {
     const auto dir = freshDirectory();
     auto system = makeBlock();
-    auto& p = system->fluid.scalar("pressure");
+    auto& p = system->fluid[fields::pressure];
     for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 100.0 + 50.0 * system->fluid.position[i].x() + 20.0 * system->fluid.position[i].y();
     const Dictionary dict = Dictionary::fromString("type probes; fields (p rho Ux); points ((0.5 0.5) (0.3 0.7) (1.09 1.09));", "probes");
     Probes<2> probes(dict, contextFor(dir, *system));
@@ -222,7 +222,7 @@ TEST(ReferenceSeries, RowsThatStepBackAreSortedWithANote) {
 TEST(LineSample, ComparesWithAProfileWhoseCoordinateDecreases) {
     const auto dir = freshDirectory();
     auto system = makeBlock();
-    for (auto& v : system->fluid.vector("velocity")) v = Vec<2>(0.3, 0.0);
+    for (auto& v : system->fluid[fields::velocity]) v = Vec<2>(0.3, 0.0);
     // Ghia's tables list y from 1 down to 0; a constant profile 0.5 against a uniform 0.3.
     writeFile(dir / "profile.csv", "# from the top\ny,u\n1,0.5\n0.5,0.5\n0,0.5\n");
     const Dictionary dict = Dictionary::fromString(
@@ -252,7 +252,7 @@ TEST(FieldErrorNorm, NormsOfAKnownPerturbationOfTheExactField) {
         Dictionary::fromString("type errorNorm; field U; scale 2; solution { type taylorGreen; U 1; L 1; nu 0.01; }", "velocityError");
     FieldErrorNorm<2> error(dict, contextFor(dir, *system));
     const double t = 0.3;
-    auto& v = system->fluid.vector("velocity");
+    auto& v = system->fluid[fields::velocity];
     const TaylorGreen2D<2> exact(dict.subDict("solution"));
     for (std::size_t i = 0; i < system->fluid.size(); ++i) v[i] = exact.velocity(system->fluid.position[i], t);
     v[17].x() += 0.1;  // one particle off by 0.1
@@ -273,7 +273,7 @@ TEST(FieldErrorNorm, PressureUpToAConstantAndASolutionWithoutPressure) {
     const Dictionary dict =
         Dictionary::fromString("type errorNorm; field p; subtractMean yes; solution { type hydrostatic; freeSurfaceHeight 1; }", "pressureError");
     FieldErrorNorm<2> error(dict, contextFor(dir, *system));
-    auto& p = system->fluid.scalar("pressure");
+    auto& p = system->fluid[fields::pressure];
     for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 1234.0 + 1000.0 * 9.81 * (1.0 - system->fluid.position[i].y());
     EXPECT_NEAR(error.norms(*system, 1.0).linf, 0.0, 1e-9);
     const Dictionary noPressure = Dictionary::fromString("type errorNorm; field p; solution { type couette; V0 1; L 1; nu 1; }", "pressureError");
@@ -358,7 +358,7 @@ TEST(WallPressureSensors, ExtrapolateTheFluidWhereTheModelSetsNoWallPressure) {
 TEST(WallPressureSensors, AverageTheModelsWallPressureOverTheirFootprintByArea) {
     const auto dir = freshDirectory();
     auto system = makeBlockOnAFloor(dummyParticles());
-    auto& p = system->walls.scalar("pressure");
+    auto& p = system->walls[fields::pressure];
     for (std::size_t j = 0; j < p.size(); ++j) p[j] = 100.0 * system->walls.position[j].x();
     const auto read = [&](const std::string& entries) {
         return WallPressureSensors<2>(Dictionary::fromString("type wallPressure; patch floor; " + entries, "sensors"), contextFor(dir, *system))
@@ -366,14 +366,14 @@ TEST(WallPressureSensors, AverageTheModelsWallPressureOverTheirFootprintByArea) 
     };
     EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], 50.0, 1e-9);    // 0.44 ... 0.56, symmetric
     EXPECT_NEAR(read("points ((0.51 0)); size 0.001;")[0], 52.0, 1e-9);  // smaller than the spacing: the nearest particle
-    system->walls.scalar("area")[13] = 3.0 * dx;                         // the particle at x = 0.44 stands for three spacings
+    system->walls[fields::area][13] = 3.0 * dx;                          // the particle at x = 0.44 stands for three spacings
     EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], (3.0 * 44.0 + 48.0 + 52.0 + 56.0) / 6.0, 1e-9);
 }
 
 TEST(WallPressureSensors, SourceFluidExtrapolatesWhereTheModelSetsAPressure) {
     const auto dir = freshDirectory();
     auto system = makeBlockOnAFloor(dummyParticles());
-    system->walls.scalar("pressure").assign(system->walls.size(), -1.0);  // what the model would read: ignored
+    system->walls[fields::pressure].assign(system->walls.size(), -1.0);  // what the model would read: ignored
     const WallPressureSensors<2> sensor(
         Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); size 0.1; source fluid;", "sensors"), contextFor(dir, *system));
     EXPECT_NEAR(sensor.pressures(*system, 0.0)[0], 1000.0 * 9.81, 1e-9);
@@ -385,7 +385,7 @@ TEST(WallPressureSensors, SensorsMoveWithTheirPatch) {
     const WallPressureSensors<2> sensor(Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); size 0.18;", "sensors"),
                                         contextFor(dir, *system));
     system->evaluateRates(0.5);  // the floor moved by 0.15
-    auto& p = system->walls.scalar("pressure");
+    auto& p = system->walls[fields::pressure];
     for (std::size_t j = 0; j < p.size(); ++j) p[j] = 100.0 * system->walls.position[j].x();
     EXPECT_NEAR(sensor.pressures(*system, 0.5)[0], 65.0, 1e-9);
 }
@@ -424,7 +424,7 @@ TEST(WallPressureSensors, BadPatchSensorOrSizeAreErrorsBeforeTheFirstStep) {
 TEST(FieldTotals, MassEnergyAndMomentumOfTheBlock) {
     const auto dir = freshDirectory();
     auto system = makeBlock();
-    for (auto& v : system->fluid.vector("velocity")) v = Vec<2>(2.0, 0.0);
+    for (auto& v : system->fluid[fields::velocity]) v = Vec<2>(2.0, 0.0);
     FieldTotals<2> totals(Dictionary::fromString("type fieldTotals;", "totals"), contextFor(dir, *system));
     totals.execute(*system, 0.0);
     const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/totals.dat");

@@ -8,10 +8,10 @@ TEST(ParticleFile, RoundTripIsBitExact) {
     const auto dir = sph::test::freshDirectory();
     sph::ParticleSet<2> set("fluid");
     set.resize(3);
-    auto& rho = set.addScalar("density", 0.0);
-    auto& v = set.addVector("velocity", sph::Vec<2>::Zero());
-    auto& patch = set.addInteger("patch", 0);
-    set.addScalar("scratch", 1.0, false);
+    auto& rho = set.add(sph::fields::density, 0.0);
+    auto& v = set.add(sph::fields::velocity, sph::Vec<2>::Zero());
+    auto& patch = set.add(sph::fields::patch, 0);
+    set.add(sph::ScalarField{"scratch"}, 1.0, false);
     for (std::size_t i = 0; i < 3; ++i) {
         set.position[i] = {0.1 * i + 1.0 / 3.0, -std::sqrt(2.0) * i};
         set.globalId[i] = static_cast<std::int64_t>(10 + i);
@@ -37,13 +37,13 @@ TEST(ParticleFile, RoundTripIsBitExact) {
     EXPECT_EQ(read.domainMax, header.domainMax);
     EXPECT_EQ(read.patchNames, header.patchNames);
     ASSERT_EQ(back.size(), 3u);
-    EXPECT_FALSE(back.hasScalar("scratch"));  // not written
+    EXPECT_FALSE(back.has(sph::ScalarField{"scratch"}));  // not written
     for (std::size_t i = 0; i < 3; ++i) {
         EXPECT_EQ(back.position[i], set.position[i]);
         EXPECT_EQ(back.globalId[i], set.globalId[i]);
-        EXPECT_EQ(back.scalar("density")[i], rho[i]);
-        EXPECT_EQ(back.vector("velocity")[i], v[i]);
-        EXPECT_EQ(back.integer("patch")[i], patch[i]);
+        EXPECT_EQ(back[sph::fields::density][i], rho[i]);
+        EXPECT_EQ(back[sph::fields::velocity][i], v[i]);
+        EXPECT_EQ(back[sph::fields::patch][i], patch[i]);
     }
     // Written through a temporary name: nothing else is left in the directory.
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);

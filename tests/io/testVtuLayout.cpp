@@ -16,8 +16,8 @@ namespace {
 std::filesystem::path writeState(const std::filesystem::path& dir) {
     sph::ParticleSet<2> set("fluid");
     set.resize(6);
-    auto& rho = set.addScalar("density", 1000.0);
-    set.addVector("velocity", sph::Vec<2>::Zero());
+    auto& rho = set.add(sph::fields::density, 1000.0);
+    set.add(sph::fields::velocity, sph::Vec<2>::Zero());
     for (std::size_t i = 0; i < set.size(); ++i) {
         set.position[i] = {0.01 * static_cast<double>(i), 0.5};
         set.globalId[i] = static_cast<std::int64_t>(i);

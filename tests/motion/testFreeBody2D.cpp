@@ -16,16 +16,16 @@ std::unique_ptr<FluidSystem<2>> bodyAndParticle(const Vec<2>& fluidAt, const Vec
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = fluidAt;
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 0.4);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 0.4);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     ParticleSet<2> walls("walls");
     walls.resize(3);
     walls.position = {Vec<2>(0.98, 1.0), Vec<2>(1.0, 1.0), Vec<2>(1.02, 1.0)};
-    walls.addScalar("mass", 0.4);
-    walls.addScalar("spacing", dx);
-    walls.addVector("normal", Vec<2>(0, 1));
-    walls.addInteger("patch", 0);
+    walls.add(fields::mass, 0.4);
+    walls.add(fields::spacing, dx);
+    walls.add(fields::normal, Vec<2>(0, 1));
+    walls.add(fields::patch, 0);
     std::vector<Patch<2>> patches(1);
     patches[0].name = "body";
     patches[0].end = 3;
@@ -49,7 +49,7 @@ TEST(FreeBody2D, FallsFreelyUnderGravity) {
     for (int k = 0; k < 50; ++k, t += 1e-3) integrator.step(*s, t, 1e-3);
     EXPECT_NEAR(body(*s).state().position.y(), 1.0 - 0.5 * 9.81 * t * t, 1e-12);
     EXPECT_NEAR(s->walls.position[2].y(), 1.0 - 0.5 * 9.81 * t * t, 1e-12);  // the particles follow
-    EXPECT_NEAR(s->walls.vector("velocity")[2].y(), -9.81 * t, 1e-12);
+    EXPECT_NEAR(s->walls[fields::velocity][2].y(), -9.81 * t, 1e-12);
 }
 
 TEST(FreeBody2D, FluidAndBodyExchangeMomentumExactly) {
@@ -60,12 +60,12 @@ TEST(FreeBody2D, FluidAndBodyExchangeMomentumExactly) {
     s->evaluateRates(0.0);
     double t = 0.0;
     for (int k = 0; k < 100; ++k, t += 1e-4) integrator.step(*s, t, 1e-4);
-    const Vec<2> fluidMomentum = 0.4 * s->fluid.vector("velocity")[0];
+    const Vec<2> fluidMomentum = 0.4 * s->fluid[fields::velocity][0];
     const Vec<2> bodyMomentum = 2.0 * body(*s).state().velocity;
     EXPECT_GT(fluidMomentum.y(), 1e-6);
     EXPECT_LT((fluidMomentum + bodyMomentum).norm(), 1e-12 * fluidMomentum.norm() + 1e-15);
     EXPECT_NE(body(*s).state().angularVelocity, 0.0);
     // The normals turn with the body.
     const double angle = body(*s).state().angle;
-    EXPECT_NEAR((s->walls.vector("normal")[0] - Vec<2>(-std::sin(angle), std::cos(angle))).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((s->walls[fields::normal][0] - Vec<2>(-std::sin(angle), std::cos(angle))).norm(), 0.0, 1e-12);
 }

@@ -131,19 +131,19 @@ TEST(PatchMotion, DeformingPatchIn3DTakesNormalsAndAreasFromTheMotion) {
     ParticleSet<3> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = Vec<3>(0.5, 0.5, 0.5);
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1.0);
-    fluid.addVector("velocity", Vec<3>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1.0);
+    fluid.add(fields::velocity, Vec<3>::Zero());
     ParticleSet<3> walls("walls");
     walls.resize(441);
     for (std::size_t k = 0; k < 441; ++k) walls.position[k] = Vec<3>(0.05 * double(k % 21), 0.05 * double(k / 21), 0.0);
-    walls.addScalar("mass", 1.0);
-    walls.addScalar("spacing", 0.05);
-    auto& area = walls.addScalar("area", 0.0025);
+    walls.add(fields::mass, 1.0);
+    walls.add(fields::spacing, 0.05);
+    auto& area = walls.add(fields::area, 0.0025);
     area[0] = 0.0;  // as boxWalls' edge particles
-    walls.addVector("normal", Vec<3>(0, 0, 1));
-    walls.addInteger("patch", 0);
-    walls.addInteger("layer", 0);
+    walls.add(fields::normal, Vec<3>(0, 0, 1));
+    walls.add(fields::patch, 0);
+    walls.add(fields::layer, 0);
     std::vector<Patch<3>> patches(1);
     patches[0].name = "floor";
     patches[0].end = 441;
@@ -154,8 +154,8 @@ TEST(PatchMotion, DeformingPatchIn3DTakesNormalsAndAreasFromTheMotion) {
     FluidSystem<3> system(std::move(models), std::move(fluid), std::move(walls), std::move(patches), Vec<3>(-1, -1, -1), Vec<3>(2, 2, 2),
                           Vec<3>::Zero(), 0.0);
     system.evaluateRates(1.0);  // full convex bulge
-    const auto& n = system.walls.vector("normal");
-    const auto& a = system.walls.scalar("area");
+    const auto& n = system.walls[fields::normal];
+    const auto& a = system.walls[fields::area];
     const std::size_t top = 10 * 21 + 10, leftFlank = 10 * 21 + 6, frontFlank = 6 * 21 + 10;
     EXPECT_NEAR(system.walls.position[top].z(), 0.2, 1e-14);
     EXPECT_LT((n[top] - Vec<3>(0, 0, 1)).norm(), 1e-12);
@@ -165,7 +165,7 @@ TEST(PatchMotion, DeformingPatchIn3DTakesNormalsAndAreasFromTheMotion) {
     EXPECT_LT(n[frontFlank].y(), -0.3);
     EXPECT_NEAR(n[leftFlank].norm(), 1.0, 1e-14);
     EXPECT_NEAR(a[leftFlank], 0.0025 / n[leftFlank].z(), 1e-12);  // a graph z(x, y): dA = dx dy / n_z
-    EXPECT_GT(system.walls.scalar("spacing")[leftFlank], 0.05);
+    EXPECT_GT(system.walls[fields::spacing][leftFlank], 0.05);
     EXPECT_EQ(a[0], 0.0);
 }
 
@@ -204,18 +204,18 @@ std::unique_ptr<FluidSystem<2>> bulgedFloor(const std::vector<std::size_t>& orde
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = Vec<2>(1.0, 0.5);
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1.0);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1.0);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     ParticleSet<2> walls("walls");
     walls.resize(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) walls.position[k] = Vec<2>(0.05 * double(order[k]), 0.0);
-    walls.addScalar("mass", 1.0);
-    walls.addScalar("spacing", 0.05);
-    walls.addScalar("area", 0.05);
-    walls.addVector("normal", Vec<2>(0, 1));
-    walls.addInteger("patch", 0);
-    walls.addInteger("layer", 0);
+    walls.add(fields::mass, 1.0);
+    walls.add(fields::spacing, 0.05);
+    walls.add(fields::area, 0.05);
+    walls.add(fields::normal, Vec<2>(0, 1));
+    walls.add(fields::patch, 0);
+    walls.add(fields::layer, 0);
     std::vector<Patch<2>> patches(1);
     patches[0].name = "floor";
     patches[0].end = order.size();
@@ -241,13 +241,13 @@ TEST(PatchMotion, DeformingPatchRecomputesNormalsAndSpacings) {
     // Stored along the wall (as polyline generates it): the chords of the moved neighbours.
     // The normals tilt away from the bulge's centre on its flanks and stay vertical at its top.
     const auto system = bulgedFloor(alongTheWall());
-    const auto& n = system->walls.vector("normal");
+    const auto& n = system->walls[fields::normal];
     EXPECT_NEAR(system->walls.position[20].y(), 0.2, 1e-14);
     EXPECT_NEAR(n[20].x(), 0.0, 1e-12);
     EXPECT_LT(n[16].x(), -0.3);  // left flank leans left
     EXPECT_GT(n[24].x(), 0.3);
-    EXPECT_GT(system->walls.scalar("spacing")[16], 0.05);  // stretched over the bulge
-    EXPECT_NEAR(system->walls.vector("velocity")[20].norm(), 0.0, 1e-12);
+    EXPECT_GT(system->walls[fields::spacing][16], 0.05);  // stretched over the bulge
+    EXPECT_NEAR(system->walls[fields::velocity][20].norm(), 0.0, 1e-12);
 }
 
 TEST(PatchMotion, DeformingPatchOutOfOrderTakesNormalsFromTheMotion) {
@@ -262,9 +262,9 @@ TEST(PatchMotion, DeformingPatchOutOfOrderTakesNormalsFromTheMotion) {
     for (std::size_t k = 1; k + 1 < 41; ++k) {
         const std::size_t at = std::find(shuffled.begin(), shuffled.end(), k) - shuffled.begin();
         const Vec<2> exact = bulge.areaStretch(Vec<2>(0.05 * double(k), 0.0), Vec<2>(0, 1), 1.0);
-        EXPECT_LT((motion->walls.vector("normal")[at] - exact.normalized()).norm(), 1e-14) << k;
-        EXPECT_NEAR(motion->walls.scalar("area")[at], 0.05 * exact.norm(), 1e-14) << k;
-        EXPECT_LT((motion->walls.vector("normal")[at] - chords->walls.vector("normal")[k]).norm(), 0.03) << k;
-        EXPECT_NEAR(motion->walls.scalar("area")[at], chords->walls.scalar("area")[k], 0.003) << k;
+        EXPECT_LT((motion->walls[fields::normal][at] - exact.normalized()).norm(), 1e-14) << k;
+        EXPECT_NEAR(motion->walls[fields::area][at], 0.05 * exact.norm(), 1e-14) << k;
+        EXPECT_LT((motion->walls[fields::normal][at] - chords->walls[fields::normal][k]).norm(), 0.03) << k;
+        EXPECT_NEAR(motion->walls[fields::area][at], chords->walls[fields::area][k], 0.003) << k;
     }
 }

@@ -20,9 +20,9 @@ Lattice makeLattice(EquationOfState eos, DensityFormulation density, const std::
                     Viscosity viscosity = NoViscosity{}, double hdx = 1.3) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(n * n);
-    auto& rho = fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1000.0 * dx * dx);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    auto& rho = fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1000.0 * dx * dx);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     const double support = 2.0 * hdx * dx;
     std::vector<bool> interior(n * n);
     for (int j = 0; j < n; ++j)
@@ -35,7 +35,7 @@ Lattice makeLattice(EquationOfState eos, DensityFormulation density, const std::
             interior[k] = x.minCoeff() > support && x.maxCoeff() < n * dx - support;
         }
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     FluidModels<2> models{WendlandC2<2>(hdx * dx), std::move(eos), std::move(viscosity), NoDensityDiffusion{}, density};
     return {FluidSystem<2>(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(-0.1, -0.1), Vec<2>(1.1, 1.1), Vec<2>::Zero(), 0.0),
             interior};
@@ -46,7 +46,7 @@ Lattice makeLattice(EquationOfState eos, DensityFormulation density, const std::
 TEST(FluidRates, UniformPressureWithFullSupportHasNoAcceleration) {
     auto lattice = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 1e4), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; });
     lattice.system.evaluateRates(0.0);
-    const auto& a = lattice.system.fluid.vector("acceleration");
+    const auto& a = lattice.system.fluid[fields::acceleration];
     const double scale = 1e4 / 1000.0 / dx;  // p / (rho dx): the size of one pair's term
     double maxInterior = 0.0, minEdge = 1e300;
     for (std::size_t k = 0; k < a.size(); ++k) {
@@ -69,8 +69,8 @@ double linearPressureError(double hdx) {
     auto lattice = makeLattice(
         eos, DensityFormulation::Continuity, [&](const Vec<2>& x) { return eos.density(1e3 + gradient.dot(x)); }, NoViscosity{}, hdx);
     lattice.system.evaluateRates(0.0);
-    const auto& a = lattice.system.fluid.vector("acceleration");
-    const auto& rho = lattice.system.fluid.scalar("density");
+    const auto& a = lattice.system.fluid[fields::acceleration];
+    const auto& rho = lattice.system.fluid[fields::density];
     double worst = 0.0;
     for (std::size_t k = 0; k < a.size(); ++k)
         if (lattice.interior[k]) worst = std::max(worst, (a[k] + gradient / rho[k]).norm() / (gradient.norm() / rho[k]));
@@ -88,7 +88,7 @@ TEST(FluidRates, LinearPressureFieldGivesItsGradient) {
 TEST(FluidRates, SummationDensityOfAFullLatticeIsNearRho0) {
     auto lattice = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Summation, [](const Vec<2>&) { return 0.0; });
     lattice.system.evaluateRates(0.0);
-    const auto& rho = lattice.system.fluid.scalar("density");
+    const auto& rho = lattice.system.fluid[fields::density];
     // Full support: rho0 times the kernel's lattice sum, computed here independently.
     const WendlandC2<2> kernel(1.3 * dx);
     double latticeSum = 0.0;
@@ -100,16 +100,16 @@ TEST(FluidRates, SummationDensityOfAFullLatticeIsNearRho0) {
         }
     }
     EXPECT_NEAR(latticeSum, 1.0, 0.02);
-    EXPECT_FALSE(lattice.system.fluid.hasScalar("densityRate"));  // summation allocates no rate
+    EXPECT_FALSE(lattice.system.fluid.has(fields::densityRate));  // summation allocates no rate
 }
 
 TEST(FluidRates, InviscidCaseAllocatesNoViscousField) {
     auto inviscid = makeLattice(TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; });
-    EXPECT_FALSE(inviscid.system.walls.hasVector("viscousVelocity"));
+    EXPECT_FALSE(inviscid.system.walls.has(fields::viscousVelocity));
     auto viscous = makeLattice(
         TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
         LaminarViscosityMorris1997(1e-3));
-    EXPECT_TRUE(viscous.system.walls.hasVector("viscousVelocity"));
+    EXPECT_TRUE(viscous.system.walls.has(fields::viscousVelocity));
 }
 
 TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
@@ -119,10 +119,10 @@ TEST(FluidRates, LaminarViscosityOfAParabolaIsNuLaplacian) {
     auto lattice = makeLattice(
         TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), DensityFormulation::Continuity, [](const Vec<2>&) { return 1000.0; },
         LaminarViscosityMorris1997(nu), 2.0);
-    auto& v = lattice.system.fluid.vector("velocity");
+    auto& v = lattice.system.fluid[fields::velocity];
     for (std::size_t k = 0; k < v.size(); ++k) v[k] = {std::pow(lattice.system.fluid.position[k].y(), 2), 0.0};
     lattice.system.evaluateRates(0.0);
-    const auto& a = lattice.system.fluid.vector("acceleration");
+    const auto& a = lattice.system.fluid[fields::acceleration];
     for (std::size_t k = 0; k < a.size(); ++k)
         if (lattice.interior[k]) {
             ASSERT_NEAR(a[k].x(), 2.0 * nu, 0.02 * 2.0 * nu);
@@ -134,19 +134,19 @@ TEST(FluidRates, FullyPeriodicLatticeHasNoEdges) {
     // Periodic in both directions, uniform pressure: every particle has full support.
     ParticleSet<2> fluid("fluid");
     fluid.resize(n * n);
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1000.0 * dx * dx);
-    fluid.addVector("velocity", Vec<2>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1000.0 * dx * dx);
+    fluid.add(fields::velocity, Vec<2>::Zero());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) fluid.position[static_cast<std::size_t>(j * n + i)] = {(i + 0.5) * dx, (j + 0.5) * dx};
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 10.0, 7.0, 1e4), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
     FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(0, 0), Vec<2>(n * dx, n * dx), Vec<2>::Zero(), 0.0,
                           {true, true});
     system.evaluateRates(0.0);
-    for (const Vec<2>& a : system.fluid.vector("acceleration")) ASSERT_LT(a.norm(), 1e-12 * 1e4 / 1000.0 / dx);
+    for (const Vec<2>& a : system.fluid[fields::acceleration]) ASSERT_LT(a.norm(), 1e-12 * 1e4 / 1000.0 / dx);
     // A particle pushed across a side comes back through the opposite one.
     system.fluid.position[0] = Vec<2>(-0.3 * dx, n * dx + 0.2 * dx);
     system.wrapPeriodic();

@@ -32,9 +32,9 @@ ParticleSet<D> disorderedBlock(const Scene<D>& s, unsigned seed) {
     std::size_t count = 1;
     for (int d = 0; d < D; ++d) count *= static_cast<std::size_t>(s.perSide);
     fluid.resize(count);
-    auto& rho = fluid.addScalar("density", s.rho0);
-    auto& m = fluid.addScalar("mass", s.rho0 * std::pow(s.dx, D));
-    auto& v = fluid.addVector("velocity", Vec<D>::Zero());
+    auto& rho = fluid.add(fields::density, s.rho0);
+    auto& m = fluid.add(fields::mass, s.rho0 * std::pow(s.dx, D));
+    auto& v = fluid.add(fields::velocity, Vec<D>::Zero());
     for (std::size_t k = 0; k < count; ++k) {
         std::size_t rest = k;
         for (int d = 0; d < D; ++d) {
@@ -56,7 +56,7 @@ ParticleSet<D> wallLayers(const Scene<D>& s) {
     std::size_t perLayer = 1;
     for (int d = 0; d + 1 < D; ++d) perLayer *= static_cast<std::size_t>(s.perSide);
     walls.resize(2 * perLayer);
-    auto& m = walls.addScalar("mass", s.rho0 * std::pow(s.dx, D));
+    auto& m = walls.add(fields::mass, s.rho0 * std::pow(s.dx, D));
     for (std::size_t w = 0; w < walls.size(); ++w) {
         std::size_t rest = w % perLayer;
         for (int d = 0; d + 1 < D; ++d) {
@@ -94,11 +94,11 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     std::mt19937 random(5);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (std::size_t w = 0; w < system.walls.size(); ++w) {
-        system.walls.scalar("pressure")[w] = 2000.0 * (1.0 + unit(random));
-        system.walls.scalar("density")[w] = s.rho0 * (1.0 + 0.01 * unit(random));
+        system.walls[fields::pressure][w] = 2000.0 * (1.0 + unit(random));
+        system.walls[fields::density][w] = s.rho0 * (1.0 + 0.01 * unit(random));
         for (int d = 0; d < D; ++d) {
-            system.walls.vector("velocity")[w][d] = 0.2 * unit(random);
-            system.walls.vector("viscousVelocity")[w][d] = 0.5 * unit(random);
+            system.walls[fields::velocity][w][d] = 0.2 * unit(random);
+            system.walls[fields::viscousVelocity][w][d] = 0.5 * unit(random);
         }
     }
     omp_set_num_threads(threads);
@@ -106,9 +106,9 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
     omp_set_num_threads(omp_get_num_procs());
 
     const auto& x = system.fluid.position;
-    const auto& v = system.fluid.vector("velocity");
-    const auto& m = system.fluid.scalar("mass");
-    const auto& rho = system.fluid.scalar("density");
+    const auto& v = system.fluid[fields::velocity];
+    const auto& m = system.fluid[fields::mass];
+    const auto& rho = system.fluid[fields::density];
     const double radius = 2.0 * s.h, eta2 = 0.01 * s.h * s.h;
     // Antuono et al.: <grad rho>^L_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j, L_i the inverse of
     // sum_j V_j (x_j - x_i) (x) grad_i W_ij (unrenormalised where its determinant is below 0.1).
@@ -158,17 +158,17 @@ void compareWithDirectSum(int threads, double c0 = Scene<D>{}.c0, bool periodicX
             const double distance = r.norm();
             if (distance >= radius) continue;
             const Vec<D> gradW = kernel.gradientFactor(distance) * r;
-            const double mw = walls.scalar("mass")[w], pw = walls.scalar("pressure")[w], rhow = walls.scalar("density")[w];
+            const double mw = walls[fields::mass][w], pw = walls[fields::pressure][w], rhow = walls[fields::density][w];
             a -= mw * (pi / (rho[i] * rho[i]) + pw / (rhow * rhow)) * gradW;
-            const double vr = (v[i] - walls.vector("viscousVelocity")[w]).dot(r);
+            const double vr = (v[i] - walls[fields::viscousVelocity][w]).dot(r);
             if (vr < 0.0) {
                 const double mu = s.h * vr / (r.squaredNorm() + eta2);
                 a -= mw * (-s.alpha * s.c0 * mu / (0.5 * (rho[i] + rhow))) * gradW;
             }
-            drho += mw * (v[i] - walls.vector("velocity")[w]).dot(gradW);
+            drho += mw * (v[i] - walls[fields::velocity][w]).dot(gradW);
         }
-        worstAcceleration = std::max(worstAcceleration, (system.fluid.vector("acceleration")[i] - a).norm());
-        worstRate = std::max(worstRate, std::abs(system.fluid.scalar("densityRate")[i] - drho));
+        worstAcceleration = std::max(worstAcceleration, (system.fluid[fields::acceleration][i] - a).norm());
+        worstRate = std::max(worstRate, std::abs(system.fluid[fields::densityRate][i] - drho));
         scaleAcceleration = std::max(scaleAcceleration, a.norm());
         scaleRate = std::max(scaleRate, std::abs(drho));
     }
@@ -221,9 +221,9 @@ TEST(PairLoop, DeltaSphLeavesALinearDensityFieldAlone) {
         Scene<2> s;
         ParticleSet<2> fluid("fluid");
         fluid.resize(static_cast<std::size_t>(s.perSide * s.perSide));
-        auto& rho = fluid.addScalar("density", s.rho0);
-        fluid.addScalar("mass", s.rho0 * s.dx * s.dx);
-        fluid.addVector("velocity", Vec<2>::Zero());
+        auto& rho = fluid.add(fields::density, s.rho0);
+        fluid.add(fields::mass, s.rho0 * s.dx * s.dx);
+        fluid.add(fields::velocity, Vec<2>::Zero());
         for (int k = 0; k < s.perSide * s.perSide; ++k) {
             const auto i = static_cast<std::size_t>(k);
             fluid.position[i] = Vec<2>((k % s.perSide + 0.5) * s.dx, (k / s.perSide + 0.5) * s.dx);
@@ -234,14 +234,14 @@ TEST(PairLoop, DeltaSphLeavesALinearDensityFieldAlone) {
         FluidModels<2> models{WendlandC2<2>(s.h), TaitEquationOfState(s.rho0, s.c0, s.gamma, 0.0), NoViscosity{}, diffusion,
                               DensityFormulation::Continuity};
         ParticleSet<2> walls("walls");
-        walls.addScalar("mass", 0.0);
+        walls.add(fields::mass, 0.0);
         FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, domain.min, domain.max, Vec<2>::Zero(), 0.0,
                               domain.periodic);
         system.evaluateRates(0.0);
         double top = 0.0, interior = 0.0;
         for (std::size_t i = 0; i < system.fluid.size(); ++i) {
             const Vec<2>& x = system.fluid.position[i];
-            const double rate = std::abs(system.fluid.scalar("densityRate")[i]);
+            const double rate = std::abs(system.fluid[fields::densityRate][i]);
             if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.46) top = std::max(top, rate);                           // the top row, mid-width
             if (x.x() > 0.2 && x.x() < 0.28 && x.y() > 0.2 && x.y() < 0.28) interior = std::max(interior, rate);  // full support
         }
@@ -297,7 +297,7 @@ TEST(PairLoop, InviscidSceneAllocatesAndEvaluatesNoViscousTerm) {
     const Scene<2> s;
     const auto build = [&](Viscosity viscosity) {
         ParticleSet<2> walls("walls");
-        walls.addScalar("mass", 0.0);
+        walls.add(fields::mass, 0.0);
         FluidModels<2> models{WendlandC2<2>(s.h), TaitEquationOfState(s.rho0, s.c0, s.gamma, 0.0), viscosity, NoDensityDiffusion{},
                               DensityFormulation::Continuity};
         return std::make_unique<FluidSystem<2>>(std::move(models), disorderedBlock(s, 3), std::move(walls), std::vector<Patch<2>>{},
@@ -308,7 +308,7 @@ TEST(PairLoop, InviscidSceneAllocatesAndEvaluatesNoViscousTerm) {
     // The loop's copies: no density (read by viscosity and diffusion only), no viscous wall velocity.
     EXPECT_TRUE(inviscid->cellOrderedFluid().density.empty());
     EXPECT_TRUE(inviscid->cellOrderedFluid().volume.empty());
-    EXPECT_FALSE(inviscid->walls.hasVector("viscousVelocity"));
+    EXPECT_FALSE(inviscid->walls.has(fields::viscousVelocity));
     const auto viscous = build(ArtificialViscosityMonaghan1992(s.alpha, 0.0, s.h, s.c0));
     viscous->evaluateRates(0.0);
     EXPECT_EQ(viscous->cellOrderedFluid().density.size(), viscous->fluid.size());

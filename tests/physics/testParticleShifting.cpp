@@ -24,9 +24,9 @@ ParticleShifting lind() { return {FickianShiftingLind2012(2.0, h), {}, dx}; }
 ParticleSet<2> lattice(int nx, int ny) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(static_cast<std::size_t>(nx * ny));
-    fluid.addScalar("density", rho0);
-    fluid.addScalar("mass", rho0 * dx * dx);
-    fluid.addVector("velocity", Vec<2>(1.0, 0.0));
+    fluid.add(fields::density, rho0);
+    fluid.add(fields::mass, rho0 * dx * dx);
+    fluid.add(fields::velocity, Vec<2>(1.0, 0.0));
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             const auto k = static_cast<std::size_t>(j * nx + i);
@@ -40,10 +40,10 @@ ParticleSet<2> lattice(int nx, int ny) {
 ParticleSet<2> floorOf(int nx, int layers) {
     ParticleSet<2> walls("walls");
     walls.resize(static_cast<std::size_t>(nx * layers));
-    walls.addScalar("mass", rho0 * dx * dx);
-    walls.addScalar("spacing", dx);
-    walls.addVector("normal", Vec<2>(0.0, 1.0));
-    walls.addInteger("patch", 0);
+    walls.add(fields::mass, rho0 * dx * dx);
+    walls.add(fields::spacing, dx);
+    walls.add(fields::normal, Vec<2>(0.0, 1.0));
+    walls.add(fields::patch, 0);
     for (int l = 0; l < layers; ++l)
         for (int i = 0; i < nx; ++i) {
             const auto w = static_cast<std::size_t>(l * nx + i);
@@ -84,8 +84,8 @@ TEST(ParticleShifting, NothingOnAUniformLattice) {
         const auto before = s->fluid.position;
         s->shiftParticles(1e-4);
         for (std::size_t i = 0; i < before.size(); ++i) {
-            EXPECT_LT(s->fluid.vector("shiftingVelocity")[i].norm(), 1e-11);
-            EXPECT_NEAR(s->fluid.scalar("freeSurfaceLambda")[i], 0.974, 0.001);  // a full support on the lattice, computed apart
+            EXPECT_LT(s->fluid[fields::shiftingVelocity][i].norm(), 1e-11);
+            EXPECT_NEAR(s->fluid[fields::freeSurfaceLambda][i], 0.974, 0.001);  // a full support on the lattice, computed apart
         }
     }
 }
@@ -95,7 +95,7 @@ TEST(ShiftingSun2017, DisplacedParticleAgainstTheSumWrittenOut) {
     const std::size_t moved = 10 * 20 + 10;
     const Vec<2> displacement(0.06 * dx, -0.03 * dx);
     s->fluid.position[moved] += displacement;
-    s->fluid.vector("velocity")[3] = Vec<2>(1.5, 0.0);  // U_max 1.5
+    s->fluid[fields::velocity][3] = Vec<2>(1.5, 0.0);  // U_max 1.5
     const auto x = s->fluid.position;
     const double dt = 1e-4;
     s->shiftParticles(dt);
@@ -109,7 +109,7 @@ TEST(ShiftingSun2017, DisplacedParticleAgainstTheSumWrittenOut) {
         sum += (1.0 + 0.2 * std::pow(kernel.value(distance) / kernel.value(dx), 4)) * dx * dx * kernel.gradientFactor(distance) * r;
     }
     const Vec<2> expected = -4.0 * h * 1.5 * sum;
-    const Vec<2> shift = s->fluid.vector("shiftingVelocity")[moved];
+    const Vec<2> shift = s->fluid[fields::shiftingVelocity][moved];
     EXPECT_LT((shift - expected).norm(), 1e-12 * expected.norm());
     EXPECT_LT(shift.dot(displacement), 0.0);  // back towards its place
     EXPECT_LT(expected.norm(), 0.75);         // within the bound U_max / 2: the sum, not the bound, was compared
@@ -153,8 +153,8 @@ TEST(FreeSurfaceMarrone2010, FlatSurfaceDetectedAndNeverCrossed) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (Vec<2>& x : s->fluid.position) x.x() += 0.1 * dx * unit(random);
     s->shiftParticles(1e-4);
-    const auto& lambda = s->fluid.scalar("freeSurfaceLambda");
-    const auto& shift = s->fluid.vector("shiftingVelocity");
+    const auto& lambda = s->fluid[fields::freeSurfaceLambda];
+    const auto& shift = s->fluid[fields::shiftingVelocity];
     double largest = 0.0;
     for (std::size_t i = 0; i < shift.size(); ++i) {
         const int row = static_cast<int>(s->fluid.position[i].y() / dx);
@@ -181,8 +181,8 @@ TEST(FreeSurfaceMarrone2010, OneLayerWallCompletesTheSumsAndIsNeverApproached) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (Vec<2>& x : s->fluid.position) x += 0.1 * dx * Vec<2>(unit(random), unit(random));
     s->shiftParticles(1e-4);
-    const auto& lambda = s->fluid.scalar("freeSurfaceLambda");
-    const auto& shift = s->fluid.vector("shiftingVelocity");
+    const auto& lambda = s->fluid[fields::freeSurfaceLambda];
+    const auto& shift = s->fluid[fields::shiftingVelocity];
     for (std::size_t i = 0; i < shift.size(); ++i) {
         if (s->fluid.position[i].y() > 2.0 * h) continue;
         EXPECT_GT(lambda[i], 0.8);
@@ -193,6 +193,6 @@ TEST(FreeSurfaceMarrone2010, OneLayerWallCompletesTheSumsAndIsNeverApproached) {
 TEST(ParticleShifting, ACaseWithoutItHasNoShiftingFields) {
     auto s = system(lattice(20, 20), ParticleSet<2>("walls"), 20, ParticleShifting{NoShifting{}, {}, dx}, false, true, 20 * dx);
     EXPECT_FALSE(s->shiftsParticles());
-    EXPECT_FALSE(s->fluid.hasVector("shiftingVelocity"));
-    EXPECT_FALSE(s->fluid.hasScalar("freeSurfaceLambda"));
+    EXPECT_FALSE(s->fluid.has(fields::shiftingVelocity));
+    EXPECT_FALSE(s->fluid.has(fields::freeSurfaceLambda));
 }

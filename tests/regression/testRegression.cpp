@@ -50,7 +50,7 @@ TEST(Regression, HydrostaticTankHoldsRhoGH) {
     const auto fluid = sph::readParticleFile<2>(dir / "2/fluid.vtu", "fluid", header);
     EXPECT_EQ(fluid.size(), 720u);
     for (std::size_t i = 0; i < fluid.size(); ++i) {
-        ASSERT_LT(fluid.vector("velocity")[i].norm(), 0.02 * std::sqrt(0.9));
+        ASSERT_LT(fluid[sph::fields::velocity][i].norm(), 0.02 * std::sqrt(0.9));
         ASSERT_GT(fluid.position[i].minCoeff(), 0.0);
         ASSERT_LT(fluid.position[i].x(), 2.0);
     }

@@ -29,11 +29,11 @@ std::unique_ptr<FluidSystem<2>> singleParticle(const Vec<2>& x, const Vec<2>& v,
     ParticleSet<2> fluid("fluid");
     fluid.resize(1);
     fluid.position[0] = x;
-    fluid.addVector("velocity", v);
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1.0);
+    fluid.add(fields::velocity, v);
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1.0);
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     FluidModels<2> models{WendlandC2<2>(0.01), TaitEquationOfState(1000.0, 10.0, 7.0, 0.0), NoViscosity{}, NoDensityDiffusion{},
                           DensityFormulation::Continuity};
     return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::vector<Patch<2>>{}, Vec<2>(-2, -2),
@@ -101,7 +101,7 @@ TEST(IntegratorOrder, SecondOrderSchemesAreExactForConstantAccelerationWithVaryi
         for (double dt : {0.01, 0.02, 0.005, 0.03}) t += integrator->step(*system, t, dt);
         const Vec<2> expected = x0 + v0 * t + 0.5 * g * t * t;
         EXPECT_NEAR((system->fluid.position[0] - expected).norm(), 0.0, 1e-13) << entries;
-        EXPECT_NEAR((system->fluid.vector("velocity")[0] - (v0 + g * t)).norm(), 0.0, 1e-13) << entries;
+        EXPECT_NEAR((system->fluid[fields::velocity][0] - (v0 + g * t)).norm(), 0.0, 1e-13) << entries;
     }
 }
 
@@ -119,9 +119,9 @@ TEST(AdaptiveIntegrators, ErrorFollowsTheTolerance) {
 ParticleSet<2> waterSquare(int side, double dx, const Vec<2>& corner, const std::function<Vec<2>(const Vec<2>&)>& velocityAt) {
     ParticleSet<2> fluid("fluid");
     fluid.resize(static_cast<std::size_t>(side * side));
-    auto& v = fluid.addVector("velocity", Vec<2>::Zero());
-    fluid.addScalar("density", 1000.0);
-    fluid.addScalar("mass", 1000.0 * dx * dx);
+    auto& v = fluid.add(fields::velocity, Vec<2>::Zero());
+    fluid.add(fields::density, 1000.0);
+    fluid.add(fields::mass, 1000.0 * dx * dx);
     for (int j = 0; j < side; ++j)
         for (int i = 0; i < side; ++i) {
             const auto k = static_cast<std::size_t>(j * side + i);
@@ -139,7 +139,7 @@ std::vector<Vec<2>> dropPositions(const std::string& entries, int steps) {
     ParticleSet<2> fluid = waterSquare(12, dx, Vec<2>(-5.5 * dx, -5.5 * dx),
                                        [](const Vec<2>& x) -> Vec<2> { return Vec<2>(-x.x() + 0.5 * x.y(), x.y() - 0.5 * x.x()) * 20.0; });
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     FluidModels<2> models{WendlandC2<2>(1.3 * dx), TaitEquationOfState(1000.0, 20.0, 7.0, 0.0), LaminarViscosityMorris1997(1e-3),
                           NoDensityDiffusion{}, DensityFormulation::Continuity};
     FluidSystem<2> system(std::move(models), std::move(fluid), std::move(walls), {}, Vec<2>(-1, -1), Vec<2>(1, 1), Vec<2>::Zero(), 0.0);
@@ -205,7 +205,7 @@ double shearWaveAmplitude(const std::string& entries, double dt, int steps, doub
     ParticleSet<2> fluid = waterSquare(side, dx, Vec<2>(0.5 * dx, 0.5 * dx),
                                        [](const Vec<2>& x) -> Vec<2> { return Vec<2>(U * std::sin(2.0 * std::numbers::pi * x.y()), 0.0); });
     ParticleSet<2> walls("walls");
-    walls.addScalar("mass", 0.0);
+    walls.add(fields::mass, 0.0);
     const double h = 1.3 * dx;
     FluidModels<2> models{WendlandC2<2>(h), TaitEquationOfState(1000.0, 1.0, 7.0, 0.0), LaminarViscosityMorris1997(nu), NoDensityDiffusion{},
                           DensityFormulation::Continuity};
@@ -224,7 +224,7 @@ double shearWaveAmplitude(const std::string& entries, double dt, int steps, doub
     exact = U * std::exp(-nu * 4.0 * std::numbers::pi * std::numbers::pi * t);
     double projection = 0.0;
     for (std::size_t k = 0; k < system.fluid.size(); ++k)
-        projection += system.fluid.vector("velocity")[k].x() * std::sin(2.0 * std::numbers::pi * system.fluid.position[k].y());
+        projection += system.fluid[fields::velocity][k].x() * std::sin(2.0 * std::numbers::pi * system.fluid.position[k].y());
     return 2.0 * projection / static_cast<double>(system.fluid.size());
 }
 
