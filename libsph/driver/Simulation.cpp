@@ -47,7 +47,7 @@ std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& contro
     const auto registry = makeFunctionObjectRegistry<D>();
     for (const std::string& name : functions->keywords()) {
         const Dictionary& dict = functions->subDict(name);
-        const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system};
+        const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system.view()};
         auto object = selectByType(registry, dict, dict, context);
         const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
         fmt::print("Selecting function object {} ({})\n", name, object->describe());
@@ -151,7 +151,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         for (auto& entry : functionObjects) {
             // Executes at the first step at or after each multiple of the interval, and at the end.
             if (!force && t < entry.nextTime - 1e-6 * entry.interval) continue;
-            entry.object->execute(system, t);
+            entry.object->execute(system.view(), t);
             while (entry.nextTime <= t + 1e-6 * entry.interval && entry.interval > 0.0) entry.nextTime += entry.interval;
         }
     };

@@ -1,7 +1,7 @@
 #include "functionObjects/BodyMotion.hpp"
 
 #include "motion/FreeBody2D.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@ BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext<D>
 }
 
 template <int D>
-void BodyMotion<D>::execute(const FluidSystem<D>& system, double t) {
+void BodyMotion<D>::execute(const FluidSystemView<D>& system, double t) {
     if constexpr (D == 2) {
         const FreeBody2D* body = nullptr;
         for (const Patch<D>& patch : system.patches)

@@ -15,7 +15,7 @@ class BodyMotion : public FunctionObject<D> {
 public:
     BodyMotion(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override { return "bodyMotion: patch " + patch_; }
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
 
 private:
     std::string patch_;

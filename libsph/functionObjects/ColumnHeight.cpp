@@ -1,7 +1,7 @@
 #include "functionObjects/ColumnHeight.hpp"
 
 #include "functionObjects/KernelInterpolation.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -14,9 +14,9 @@ namespace sph {
 template <int D>
 ColumnHeight<D>::ColumnHeight(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : points_(readSamplePoints(dict, "points", context.system, "gauge")),
-      radius_(dict.getPositiveOrDefault("radius", context.system.smoothingLength())) {
-    const FluidSystem<D>& system = context.system;
-    const Vec<D> g = system.gravityAt(std::numeric_limits<double>::max());
+      radius_(dict.getPositiveOrDefault("radius", context.system.smoothingLength)) {
+    const FluidSystemView<D>& system = context.system;
+    const Vec<D> g = system.gravity.full;
     if (!(g.norm() > 0.0)) dict.fail("type", "columnHeight measures against gravity, and this case has none");
     up_ = -g.normalized();
     const auto& m = system.fluid[fields::mass];
@@ -38,7 +38,7 @@ std::string ColumnHeight<D>::describe() const {
 }
 
 template <int D>
-std::vector<double> ColumnHeight<D>::heights(const FluidSystem<D>& system) const {
+std::vector<double> ColumnHeight<D>::heights(const FluidSystemView<D>& system) const {
     std::vector<double> result(points_.size(), 0.0);
     const auto& x = system.fluid.position;
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i)
@@ -51,7 +51,7 @@ std::vector<double> ColumnHeight<D>::heights(const FluidSystem<D>& system) const
 }
 
 template <int D>
-void ColumnHeight<D>::execute(const FluidSystem<D>& system, double t) {
+void ColumnHeight<D>::execute(const FluidSystemView<D>& system, double t) {
     const std::vector<double> h = heights(system);
     out_.append(fmt::format("{:.9g} {:.9g}", t, fmt::join(h, " ")));
     if (reference_) reference_->compare(t, h);

@@ -28,10 +28,10 @@ class ColumnHeight : public FunctionObject<D> {
 public:
     ColumnHeight(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
-    std::vector<double> heights(const FluidSystem<D>& system) const;  // one per gauge (exposed for tests)
+    std::vector<double> heights(const FluidSystemView<D>& system) const;  // one per gauge (exposed for tests)
 
 private:
     std::vector<Vec<D>> points_;

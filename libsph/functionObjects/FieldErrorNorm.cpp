@@ -1,7 +1,7 @@
 #include "functionObjects/FieldErrorNorm.hpp"
 
 #include "io/SelectByType.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -30,7 +30,7 @@ std::string FieldErrorNorm<D>::describe() const {
 }
 
 template <int D>
-void FieldErrorNorm<D>::accumulate(const FluidSystem<D>& system, double t, ErrorAccumulator& accumulator) const {
+void FieldErrorNorm<D>::accumulate(const FluidSystemView<D>& system, double t, ErrorAccumulator& accumulator) const {
     const auto& x = system.fluid.position;
     const std::size_t n = system.fluid.ownedCount();
     if (field_ == "U") {
@@ -39,7 +39,7 @@ void FieldErrorNorm<D>::accumulate(const FluidSystem<D>& system, double t, Error
         return;
     }
     const auto& p = system.fluid[fields::pressure];
-    const FlowConstants<D> constants{rho0_, system.gravityAt(t)};
+    const FlowConstants<D> constants{rho0_, system.gravity.at(t)};
     std::vector<double> exact(n);
     double meanDifference = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -51,14 +51,14 @@ void FieldErrorNorm<D>::accumulate(const FluidSystem<D>& system, double t, Error
 }
 
 template <int D>
-ErrorNorms FieldErrorNorm<D>::norms(const FluidSystem<D>& system, double t) const {
+ErrorNorms FieldErrorNorm<D>::norms(const FluidSystemView<D>& system, double t) const {
     ErrorAccumulator now;
     accumulate(system, t, now);
     return now.norms(scale_);
 }
 
 template <int D>
-void FieldErrorNorm<D>::execute(const FluidSystem<D>& system, double t) {
+void FieldErrorNorm<D>::execute(const FluidSystemView<D>& system, double t) {
     ErrorAccumulator now;
     accumulate(system, t, now);
     overRun_.merge(now);

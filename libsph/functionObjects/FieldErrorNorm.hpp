@@ -26,15 +26,15 @@ class FieldErrorNorm : public FunctionObject<D> {
 public:
     FieldErrorNorm(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
     // The norms over the particles now (exposed for tests).
-    ErrorNorms norms(const FluidSystem<D>& system, double t) const;
+    ErrorNorms norms(const FluidSystemView<D>& system, double t) const;
 
 private:
     // Adds each particle's error to `accumulator`.
-    void accumulate(const FluidSystem<D>& system, double t, ErrorAccumulator& accumulator) const;
+    void accumulate(const FluidSystemView<D>& system, double t, ErrorAccumulator& accumulator) const;
 
     std::string field_, solutionType_;
     std::unique_ptr<AnalyticSolution<D>> solution_;

@@ -1,6 +1,6 @@
 #include "functionObjects/FieldTotals.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@ FieldTotals<D>::FieldTotals(const Dictionary&, const FunctionObjectContext<D>& c
 }
 
 template <int D>
-void FieldTotals<D>::execute(const FluidSystem<D>& system, double t) {
+void FieldTotals<D>::execute(const FluidSystemView<D>& system, double t) {
     const auto& m = system.fluid[fields::mass];
     const auto& v = system.fluid[fields::velocity];
     double mass = 0.0, energy = 0.0;

@@ -16,7 +16,7 @@ class FieldTotals : public FunctionObject<D> {
 public:
     FieldTotals(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override { return "fieldTotals: mass, kinetic energy, momentum"; }
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
 
 private:
     TimeSeriesFile out_;

@@ -10,6 +10,7 @@
 #include "core/Registry.hpp"
 #include "functionObjects/ErrorNorms.hpp"
 #include "io/Dictionary.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -19,14 +20,11 @@
 namespace sph {
 
 template <int D>
-class FluidSystem;
-
-template <int D>
 struct FunctionObjectContext {
     std::filesystem::path caseDirectory;
     std::filesystem::path outputDirectory;  // postProcessing/<name>/<startTime>
     double rho0;
-    const FluidSystem<D>& system;  // the domain, gravity and models, for checks before the first step
+    FluidSystemView<D> system;  // the domain, gravity and models, for checks before the first step
 };
 
 template <int D>
@@ -34,7 +32,7 @@ class FunctionObject {
 public:
     virtual ~FunctionObject() = default;
     virtual std::string describe() const = 0;
-    virtual void execute(const FluidSystem<D>& system, double t) = 0;
+    virtual void execute(const FluidSystemView<D>& system, double t) = 0;
     // Errors against a reference the case declared, for the run's closing summary; none by default.
     virtual std::vector<ReportedError> errors() const { return {}; }
 };

@@ -1,6 +1,6 @@
 #include "functionObjects/KernelInterpolation.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 namespace sph {
 
 template <int D>
-InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>& x) {
+InterpolatedFluid<D> interpolateFluid(const FluidSystemView<D>& system, const Vec<D>& x) {
     const double* m = system.fluid[fields::mass].data();
     const double* rho = system.fluid[fields::density].data();
     const double* p = system.fluid[fields::pressure].data();
@@ -17,7 +17,7 @@ InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>
     InterpolatedFluid<D> result;
     std::visit(
         [&](const auto& kernel) {
-            system.fluidCells().forEachNeighbour(x, system.supportRadius(), [&](std::uint32_t j, const Vec<D>&, double r2) {
+            system.fluidCells.forEachNeighbour(x, system.supportRadius, [&](std::uint32_t j, const Vec<D>&, double r2) {
                 const double w = kernel.value(std::sqrt(r2)) * m[j] / rho[j];
                 result.weight += w;
                 result.pressure += w * p[j];
@@ -25,7 +25,7 @@ InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>
                 result.velocity += w * v[j];
             });
         },
-        system.models().kernel);
+        system.kernel);
     if (result.weight > 0.0) {
         const double inverse = 1.0 / result.weight;
         result.pressure *= inverse;
@@ -36,11 +36,11 @@ InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>
 }
 
 template <int D>
-std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystem<D>& system, const std::string& what) {
+std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystemView<D>& system, const std::string& what) {
     const std::vector<Vec<D>> points = dict.getVectorList<D>(keyword);
     if (points.empty()) dict.fail(keyword, "lists no " + what);
-    const Vec<D>& lo = system.domainMin();
-    const Vec<D>& hi = system.domainMax();
+    const Vec<D>& lo = system.domainMin;
+    const Vec<D>& hi = system.domainMax;
     for (std::size_t k = 0; k < points.size(); ++k)
         if ((points[k].array() < lo.array()).any() || (points[k].array() > hi.array()).any())
             dict.fail(keyword, fmt::format("{} {} at ({:g}) lies outside the domain [({:g}), ({:g})]", what, k, fmt::join(points[k], " "),
@@ -64,17 +64,17 @@ void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, 
                   fmt::format("unknown field '{}'; valid fields in {}D are: p, rho, U, Ux{}{}", field, D, D > 1 ? ", Uy" : "", D > 2 ? ", Uz" : ""));
 }
 
-template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystem<1>&, const Vec<1>&);
-template InterpolatedFluid<2> interpolateFluid<2>(const FluidSystem<2>&, const Vec<2>&);
-template InterpolatedFluid<3> interpolateFluid<3>(const FluidSystem<3>&, const Vec<3>&);
+template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystemView<1>&, const Vec<1>&);
+template InterpolatedFluid<2> interpolateFluid<2>(const FluidSystemView<2>&, const Vec<2>&);
+template InterpolatedFluid<3> interpolateFluid<3>(const FluidSystemView<3>&, const Vec<3>&);
 template double fieldValue<1>(const InterpolatedFluid<1>&, const std::string&);
 template void checkInterpolatedField<1>(const Dictionary&, const std::string&, const std::string&);
-template std::vector<Vec<1>> readSamplePoints<1>(const Dictionary&, const std::string&, const FluidSystem<1>&, const std::string&);
+template std::vector<Vec<1>> readSamplePoints<1>(const Dictionary&, const std::string&, const FluidSystemView<1>&, const std::string&);
 template double fieldValue<2>(const InterpolatedFluid<2>&, const std::string&);
 template void checkInterpolatedField<2>(const Dictionary&, const std::string&, const std::string&);
-template std::vector<Vec<2>> readSamplePoints<2>(const Dictionary&, const std::string&, const FluidSystem<2>&, const std::string&);
+template std::vector<Vec<2>> readSamplePoints<2>(const Dictionary&, const std::string&, const FluidSystemView<2>&, const std::string&);
 template double fieldValue<3>(const InterpolatedFluid<3>&, const std::string&);
 template void checkInterpolatedField<3>(const Dictionary&, const std::string&, const std::string&);
-template std::vector<Vec<3>> readSamplePoints<3>(const Dictionary&, const std::string&, const FluidSystem<3>&, const std::string&);
+template std::vector<Vec<3>> readSamplePoints<3>(const Dictionary&, const std::string&, const FluidSystemView<3>&, const std::string&);
 
 }  // namespace sph

@@ -6,14 +6,12 @@
 
 #include "core/Vector.hpp"
 #include "io/Dictionary.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sph {
-
-template <int D>
-class FluidSystem;
 
 template <int D>
 struct InterpolatedFluid {
@@ -23,7 +21,7 @@ struct InterpolatedFluid {
 };
 
 template <int D>
-InterpolatedFluid<D> interpolateFluid(const FluidSystem<D>& system, const Vec<D>& x);
+InterpolatedFluid<D> interpolateFluid(const FluidSystemView<D>& system, const Vec<D>& x);
 
 // One field of an interpolated sample by name: p, rho, U (magnitude), Ux, Uy, Uz.
 template <int D>
@@ -34,6 +32,6 @@ void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, 
 
 // Reads the sample points of `keyword`; a point outside the domain is an error naming it (`what`: "probe", "gauge").
 template <int D>
-std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystem<D>& system, const std::string& what);
+std::vector<Vec<D>> readSamplePoints(const Dictionary& dict, const std::string& keyword, const FluidSystemView<D>& system, const std::string& what);
 
 }  // namespace sph

@@ -3,7 +3,7 @@
 #include "functionObjects/KernelInterpolation.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/TimeName.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -44,7 +44,7 @@ std::string LineSample<D>::describe() const {
 }
 
 template <int D>
-std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSystem<D>& system) const {
+std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSystemView<D>& system) const {
     std::vector<Sample> samples;
     for (int s = 0; s < points_; ++s) {
         const Vec<D> x = start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1));
@@ -55,9 +55,9 @@ std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSys
 }
 
 template <int D>
-void LineSample<D>::execute(const FluidSystem<D>& system, double t) {
+void LineSample<D>::execute(const FluidSystemView<D>& system, double t) {
     const std::vector<Sample> samples = sample(system);
-    const FlowConstants<D> constants{rho0_, system.gravityAt(t)};
+    const FlowConstants<D> constants{rho0_, system.gravity.at(t)};
     std::string csv = hydrostatic_ ? "distance,x,y,z,p,rho,Ux,Uy,Uz,p_ref\n" : "distance,x,y,z,p,rho,Ux,Uy,Uz\n";
     ErrorAccumulator errors;
     for (const Sample& s : samples) {

@@ -35,7 +35,7 @@ class LineSample : public FunctionObject<D> {
 public:
     LineSample(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
     struct Sample {
@@ -44,7 +44,7 @@ public:
         Vec<D> velocity;
     };
     // Interpolated values at the points (exposed for tests).
-    std::vector<Sample> sample(const FluidSystem<D>& system) const;
+    std::vector<Sample> sample(const FluidSystemView<D>& system) const;
 
 private:
     Vec<D> start_, end_;

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "io/Dictionary.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 namespace sph {
 
 template <int D>
-const Patch<D>& patchByName(const Dictionary& dict, const std::string& keyword, const std::string& name, const FluidSystem<D>& system) {
+const Patch<D>& patchByName(const Dictionary& dict, const std::string& keyword, const std::string& name, const FluidSystemView<D>& system) {
     std::vector<std::string> names;
     for (const Patch<D>& patch : system.patches) {
         if (patch.name == name) return patch;

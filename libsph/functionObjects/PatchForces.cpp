@@ -2,7 +2,7 @@
 
 #include "functionObjects/PatchByName.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 #include "physics/FluidWallPair.hpp"
 
 #include <fmt/format.h>
@@ -34,15 +34,15 @@ std::string PatchForces<D>::describe() const {
 }
 
 template <int D>
-std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
+std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystemView<D>& system) const {
     const auto& v = system.fluid[fields::velocity];
     const auto& m = system.fluid[fields::mass];
     const auto& rho = system.fluid[fields::density];
     const auto& p = system.fluid[fields::pressure];
     const auto& walls = system.walls;
     const WallPairFields<D> wall{walls[fields::mass].data(), walls[fields::pressure].data(), walls[fields::density].data(),
-                                 system.viscous() ? walls[fields::viscousVelocity].data() : nullptr};
-    const double eta2 = viscousRegularisation(system.smoothingLength());
+                                 system.viscous ? walls[fields::viscousVelocity].data() : nullptr};
+    const double eta2 = viscousRegularisation(system.smoothingLength);
     std::vector<Vec<D>> result;
     std::visit(
         [&](const auto& kernel, const auto& viscosity) {
@@ -50,8 +50,8 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
                 const Patch<D>& patch = system.patches[k];
                 Vec<D> force = Vec<D>::Zero();
                 for (std::size_t w = patch.begin; w < patch.end; ++w)
-                    system.fluidCells().forEachNeighbour(
-                        walls.position[w], system.supportRadius(), [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
+                    system.fluidCells.forEachNeighbour(
+                        walls.position[w], system.supportRadius, [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
                             const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
                             const double F = kernel.gradientFactor(std::sqrt(r2));
                             force -= m[i] * fluidWallAcceleration<true>(viscosity, r, r2, F, eta2, p[i] / (rho[i] * rho[i]), rho[i], v[i], wall, w);
@@ -59,12 +59,12 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystem<D>& system) const {
                 result.push_back(force);
             }
         },
-        system.models().kernel, system.models().viscosity);
+        system.kernel, system.viscosity);
     return result;
 }
 
 template <int D>
-void PatchForces<D>::execute(const FluidSystem<D>& system, double t) {
+void PatchForces<D>::execute(const FluidSystemView<D>& system, double t) {
     std::string line = fmt::format("{:.9g}", t);
     for (const Vec<D>& force : forces(system)) line += fmt::format(" {:.9g}", fmt::join(force, " "));
     out_.append(line);

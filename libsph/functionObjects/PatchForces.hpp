@@ -24,9 +24,9 @@ class PatchForces : public FunctionObject<D> {
 public:
     PatchForces(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
 
-    std::vector<Vec<D>> forces(const FluidSystem<D>& system) const;  // one per patch (exposed for tests)
+    std::vector<Vec<D>> forces(const FluidSystemView<D>& system) const;  // one per patch (exposed for tests)
 
 private:
     std::vector<std::string> names_;

@@ -1,7 +1,7 @@
 #include "functionObjects/Probes.hpp"
 
 #include "functionObjects/KernelInterpolation.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -31,7 +31,7 @@ std::string Probes<D>::describe() const {
 }
 
 template <int D>
-std::vector<std::vector<double>> Probes<D>::sample(const FluidSystem<D>& system) const {
+std::vector<std::vector<double>> Probes<D>::sample(const FluidSystemView<D>& system) const {
     std::vector<std::vector<double>> values(fields_.size(), std::vector<double>(points_.size()));
     for (std::size_t k = 0; k < points_.size(); ++k) {
         const InterpolatedFluid<D> sampled = interpolateFluid(system, points_[k]);
@@ -41,7 +41,7 @@ std::vector<std::vector<double>> Probes<D>::sample(const FluidSystem<D>& system)
 }
 
 template <int D>
-void Probes<D>::execute(const FluidSystem<D>& system, double t) {
+void Probes<D>::execute(const FluidSystemView<D>& system, double t) {
     const auto values = sample(system);
     for (std::size_t f = 0; f < fields_.size(); ++f) {
         std::string line = fmt::format("{:.9g}", t);

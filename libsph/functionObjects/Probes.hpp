@@ -26,11 +26,11 @@ class Probes : public FunctionObject<D> {
 public:
     Probes(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
     // The fields at the probes, [field][probe] (exposed for tests).
-    std::vector<std::vector<double>> sample(const FluidSystem<D>& system) const;
+    std::vector<std::vector<double>> sample(const FluidSystemView<D>& system) const;
 
 private:
     std::vector<Vec<D>> points_;

@@ -1,6 +1,6 @@
 #include "functionObjects/SurgeFront.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 #include <limits>
@@ -24,7 +24,7 @@ std::string SurgeFront<D>::describe() const {
 }
 
 template <int D>
-void SurgeFront<D>::execute(const FluidSystem<D>& system, double t) {
+void SurgeFront<D>::execute(const FluidSystemView<D>& system, double t) {
     double front = -std::numeric_limits<double>::infinity();
     const auto& x = system.fluid.position;
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) front = std::max(front, (x[i] - origin_).dot(direction_));

@@ -24,7 +24,7 @@ class SurgeFront : public FunctionObject<D> {
 public:
     SurgeFront(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
 private:

@@ -1,6 +1,6 @@
 #include "functionObjects/WallPenetrations.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -14,16 +14,16 @@ WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectCon
     : out_(context.outputDirectory, "penetrations.dat", "# time behindWall mostSoFar") {}
 
 template <int D>
-std::size_t WallPenetrations<D>::count(const FluidSystem<D>& system) {
+std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
     const std::size_t n = system.fluid.ownedCount();
     const Vec<D>* x = system.fluid.position.data();
     const Vec<D>* normal = system.walls[fields::normal].data();
     const int* layer = system.walls.optionalData(fields::layer);
     // The wall-particle patches share one cell list; each wall-force patch has its own.
-    std::vector<const CellLinkedList<D>*> lists{&system.wallCells()};
+    std::vector<const CellLinkedList<D>*> lists{&system.wallCells};
     for (const Patch<D>& patch : system.patches)
         if (patch.cells) lists.push_back(&*patch.cells);
-    const double radius = system.supportRadius();
+    const double radius = system.supportRadius;
     std::size_t behind = 0;
 #pragma omp parallel for schedule(static) reduction(+ : behind)
     for (std::size_t i = 0; i < n; ++i) {
@@ -43,7 +43,7 @@ std::size_t WallPenetrations<D>::count(const FluidSystem<D>& system) {
 }
 
 template <int D>
-void WallPenetrations<D>::execute(const FluidSystem<D>& system, double t) {
+void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
     const std::size_t behind = count(system);
     most_ = std::max(most_, behind);
     out_.append(fmt::format("{:.9g} {} {}", t, behind, most_));

@@ -18,10 +18,10 @@ class WallPenetrations : public FunctionObject<D> {
 public:
     WallPenetrations(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override { return "wallPenetrations: fluid particles behind a wall, every execution"; }
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
 
     // The number of fluid particles behind a wall in `system` now.
-    static std::size_t count(const FluidSystem<D>& system);
+    static std::size_t count(const FluidSystemView<D>& system);
 
 private:
     TimeSeriesFile out_;

@@ -2,7 +2,7 @@
 
 #include "boundaryModels/WallPressureExtrapolation.hpp"
 #include "functionObjects/PatchByName.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -15,7 +15,7 @@ namespace sph {
 template <int D>
 WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : points_(dict.getVectorList<D>("points")), window_(dict.getPositiveOrDefault("timeWindow", 0.0)), patchName_(dict.get<std::string>("patch")) {
-    const FluidSystem<D>& system = context.system;
+    const FluidSystemView<D>& system = context.system;
     if (points_.empty()) dict.fail("points", "lists no sensor");
     const Patch<D>* patch = &patchByName(dict, "patch", patchName_, system);
     const auto source = dict.getOrDefault<std::string>("source", "model");
@@ -78,23 +78,23 @@ std::string WallPressureSensors<D>::describe() const {
 }
 
 template <int D>
-double WallPressureSensors<D>::extrapolatedPressure(const FluidSystem<D>& system, std::size_t wall, double t) const {
+double WallPressureSensors<D>::extrapolatedPressure(const FluidSystemView<D>& system, std::size_t wall, double t) const {
     const double* p = system.fluid[fields::pressure].data();
     const double* rho = system.fluid[fields::density].data();
     const Vec<D> wallAcceleration = system.walls.has(fields::acceleration) ? system.walls[fields::acceleration][wall] : Vec<D>::Zero();
     WallPressureExtrapolation<D> extrapolation;
     std::visit(
         [&](const auto& kernel) {
-            system.fluidCells().forEachNeighbour(
-                system.walls.position[wall], system.supportRadius(),
-                [&](std::uint32_t f, const Vec<D>& r, double r2) { extrapolation.add(kernel.value(std::sqrt(r2)), p[f], rho[f], r); });
+            system.fluidCells.forEachNeighbour(system.walls.position[wall], system.supportRadius, [&](std::uint32_t f, const Vec<D>& r, double r2) {
+                extrapolation.add(kernel.value(std::sqrt(r2)), p[f], rho[f], r);
+            });
         },
-        system.models().kernel);
-    return extrapolation.weight > 0.0 ? extrapolation.pressure(system.gravityAt(t) - wallAcceleration) : 0.0;
+        system.kernel);
+    return extrapolation.weight > 0.0 ? extrapolation.pressure(system.gravity.at(t) - wallAcceleration) : 0.0;
 }
 
 template <int D>
-std::vector<double> WallPressureSensors<D>::pressures(const FluidSystem<D>& system, double t) const {
+std::vector<double> WallPressureSensors<D>::pressures(const FluidSystemView<D>& system, double t) const {
     const auto& wallPressure = system.walls[fields::pressure];
     const std::vector<double>* area = system.walls.has(fields::area) ? &system.walls[fields::area] : nullptr;
     std::vector<double> result;
@@ -136,7 +136,7 @@ std::vector<double> WallPressureSensors<D>::averaged(double t, const std::vector
 }
 
 template <int D>
-void WallPressureSensors<D>::execute(const FluidSystem<D>& system, double t) {
+void WallPressureSensors<D>::execute(const FluidSystemView<D>& system, double t) {
     const std::vector<double> p = pressures(system, t);
     if (window_ > 0.0) {
         const std::vector<double> mean = averaged(t, p);

@@ -50,15 +50,15 @@ class WallPressureSensors : public FunctionObject<D> {
 public:
     WallPressureSensors(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
-    std::vector<double> pressures(const FluidSystem<D>& system, double t) const;  // one per sensor, unfiltered (exposed for tests)
+    std::vector<double> pressures(const FluidSystemView<D>& system, double t) const;  // one per sensor, unfiltered (exposed for tests)
     // The trailing average of the signal over timeWindow, after adding the sample (t, values).
     std::vector<double> averaged(double t, const std::vector<double>& values);
 
 private:
-    double extrapolatedPressure(const FluidSystem<D>& system, std::size_t wall, double t) const;
+    double extrapolatedPressure(const FluidSystemView<D>& system, std::size_t wall, double t) const;
 
     std::vector<Vec<D>> points_;
     double size_, window_;

@@ -2,7 +2,7 @@
 
 #include "functionObjects/KernelInterpolation.hpp"
 #include "functionObjects/PatchByName.hpp"
-#include "physics/FluidSystem.hpp"
+#include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
@@ -32,20 +32,20 @@ WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& 
     : points_(readSamplePoints(dict, "points", context.system, "gauge")),
       threshold_(dict.getOrDefault("threshold", 0.5)),
       patchName_(dict.getOrDefault<std::string>("patch", "")) {
-    const FluidSystem<D>& system = context.system;
-    const Vec<D> g = system.gravityAt(std::numeric_limits<double>::max());
+    const FluidSystemView<D>& system = context.system;
+    const Vec<D> g = system.gravity.full;
     if (!(g.norm() > 0.0)) dict.fail("type", "waveGauge measures against gravity, and this case has none");
     up_ = -g.normalized();
     if (!(threshold_ > 0.0 && threshold_ < 1.0))
         dict.fail("threshold", fmt::format("{:g} is not a volume fraction between 0 and 1 (exclusive); 0.5 reads a flat surface", threshold_));
     for (const Vec<D>& point : points_) {
-        const double reach = distanceToBoundary(point, up_, system.domainMin(), system.domainMax());
+        const double reach = distanceToBoundary(point, up_, system.domainMin, system.domainMax);
         lengths_.push_back(dict.getPositiveOrDefault("length", reach));
     }
     if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, system).motion.get();
     const auto& m = system.fluid[fields::mass];
     const auto& rho = system.fluid[fields::density];
-    const double spacing = system.fluid.size() > 0 ? std::pow(m[0] / rho[0], 1.0 / D) : system.smoothingLength();
+    const double spacing = system.fluid.size() > 0 ? std::pow(m[0] / rho[0], 1.0 / D) : system.smoothingLength;
     step_ = 0.25 * spacing;
     std::string header = "# time";
     for (const Vec<D>& point : points_) header += fmt::format(" eta({:g})", fmt::join(point, " "));
@@ -64,7 +64,7 @@ std::string WaveGauge<D>::describe() const {
 }
 
 template <int D>
-std::vector<double> WaveGauge<D>::elevations(const FluidSystem<D>& system, double t) const {
+std::vector<double> WaveGauge<D>::elevations(const FluidSystemView<D>& system, double t) const {
     std::vector<double> result;
     result.reserve(points_.size());
     for (std::size_t k = 0; k < points_.size(); ++k) {
@@ -95,7 +95,7 @@ std::vector<double> WaveGauge<D>::elevations(const FluidSystem<D>& system, doubl
 }
 
 template <int D>
-void WaveGauge<D>::execute(const FluidSystem<D>& system, double t) {
+void WaveGauge<D>::execute(const FluidSystemView<D>& system, double t) {
     const std::vector<double> eta = elevations(system, t);
     out_.append(fmt::format("{:.9g} {:.9g}", t, fmt::join(eta, " ")));
     if (reference_) reference_->compare(t, eta);

@@ -43,10 +43,10 @@ class WaveGauge : public FunctionObject<D> {
 public:
     WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& context);
     std::string describe() const override;
-    void execute(const FluidSystem<D>& system, double t) override;
+    void execute(const FluidSystemView<D>& system, double t) override;
     std::vector<ReportedError> errors() const override;
 
-    std::vector<double> elevations(const FluidSystem<D>& system, double t) const;  // one per gauge (exposed for tests)
+    std::vector<double> elevations(const FluidSystemView<D>& system, double t) const;  // one per gauge (exposed for tests)
 
 private:
     std::vector<Vec<D>> points_;

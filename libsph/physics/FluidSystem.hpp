@@ -28,8 +28,10 @@
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
 #include "physics/CellOrderedFluid.hpp"
+#include "physics/FluidSystemView.hpp"
+#include "physics/Gravity.hpp"
+#include "physics/Patch.hpp"
 #include "physics/ParticleShiftingScratch.hpp"
-#include "motion/PatchMotion.hpp"
 #include "particleShifting/ParticleShifting.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "viscosity/Viscosity.hpp"
@@ -46,15 +48,6 @@ enum class DensityFormulation { Summation, Continuity };
 // Which terms an evaluation computes. An implicit-explicit integrator splits the right-hand
 // side: the viscous acceleration (implicit) apart from everything else (explicit).
 enum class RateTerms { All, AllButViscous, ViscousOnly };
-
-template <int D>
-struct Patch {
-    std::string name;
-    std::size_t begin = 0, end = 0;  // range in the wall particle set
-    std::unique_ptr<BoundaryModel<D>> model;
-    std::optional<CellLinkedList<D>> cells;  // the patch's particles, for wall-force models
-    std::unique_ptr<PatchMotion<D>> motion;  // prescribed motion; none for a fixed patch
-};
 
 template <int D>
 struct FluidModels {
@@ -113,8 +106,9 @@ public:
     const FluidModels<D>& models() const { return models_; }
     const Vec<D>& domainMin() const { return domainMin_; }
     const Vec<D>& domainMax() const { return domainMax_; }
-    // What a boundary model sees of the system at time t.
+    // What a boundary model sees of the system at time t, and what post-processing reads.
     BoundaryView<D> boundaryView(double t);
+    FluidSystemView<D> view() const;
 
     ParticleSet<D> fluid;
     ParticleSet<D> walls;
@@ -136,8 +130,7 @@ private:
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;
     std::array<bool, D> periodic_;
-    Vec<D> gravity_;
-    double gravityRampTime_;
+    Gravity<D> gravity_;
     double supportRadius_;
     bool wallDensityEvolves_ = false;
     bool keepsUncorrectedAcceleration_ = false;

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <omp.h>
 #include <stdexcept>
 
@@ -47,8 +46,7 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
       domainMin_(domainMin),
       domainMax_(domainMax),
       periodic_(periodic),
-      gravity_(gravity),
-      gravityRampTime_(gravityRampTime),
+      gravity_{gravity, gravityRampTime},
       supportRadius_(std::visit([](const auto& k) { return k.supportRadius(); }, models_.kernel)),
       fluidCells_(domainMin, domainMax, supportRadius_, periodic),
       wallCells_(domainMin, domainMax, supportRadius_, periodic) {
@@ -135,14 +133,18 @@ double FluidSystem<D>::smoothingLength() const {
 
 template <int D>
 Vec<D> FluidSystem<D>::gravityAt(double t) const {
-    // Smooth ramp from 0 over gravityRampTime (Adami et al. 2012 hydrostatic test, as in PySPH).
-    if (t >= gravityRampTime_) return gravity_;
-    return gravity_ * (0.5 * (std::sin((t / gravityRampTime_ - 0.5) * std::numbers::pi) + 1.0));
+    return gravity_.at(t);
 }
 
 template <int D>
 BoundaryView<D> FluidSystem<D>::boundaryView(double t) {
     return {fluid, walls, fluidCells_, wallCells_, models_.kernel, models_.eos, supportRadius_, continuity(), gravityAt(t)};
+}
+
+template <int D>
+FluidSystemView<D> FluidSystem<D>::view() const {
+    return {fluid,     walls,      patches,    fluidCells_, wallCells_, models_.kernel, models_.viscosity, supportRadius_, smoothingLength(),
+            viscous(), domainMin_, domainMax_, gravity_};
 }
 
 template <int D>

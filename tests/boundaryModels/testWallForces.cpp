@@ -477,5 +477,5 @@ TEST(WallPenetrations, CountsFluidBehindTheNearestFirstLayerParticle) {
         system<2>(fluidSet<2>({Vec<2>(0.5, 0.01), Vec<2>(0.5, -0.01), Vec<2>(0.99, -0.02), Vec<2>(0.5, -0.5)}), wallSet<2>(walls, Vec<2>(0, 1), dx),
                   std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h, Vec<2>(-1, -1),
                   Vec<2>(2, 1));
-    EXPECT_EQ(WallPenetrations<2>::count(*s), 2u);
+    EXPECT_EQ(WallPenetrations<2>::count(s->view()), 2u);
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
 
 using namespace sph::test;
 
@@ -67,8 +68,9 @@ TEST(BadInput, KernelThisBuildDidNotCompile) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/sphSchemes", "type wendlandC2;", "type wendlandC6;");
     expectContains(failureOf(dir), (dir / "system/sphSchemes").string() +
-                                       ":1:28: error: kernel 'wendlandC6' is not compiled into this build (CMake option SPHKIT_KERNELS); "
-                                       "compiled kernels: ");
+                                       ":1:23: error: keyword 'type' in dictionary 'sphSchemes/kernel': kernel 'wendlandC6' is not compiled "
+                                       "into this build (CMake option SPHKIT_KERNELS); compiled kernels: " +
+                                       std::string(sph::compiledKernelNames));
 }
 
 TEST(BadInput, UnknownBoundaryModel) {
