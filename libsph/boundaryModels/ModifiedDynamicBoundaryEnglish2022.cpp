@@ -7,7 +7,9 @@
 
 namespace sph {
 
-namespace {
+// Named, not anonymous: in the sanitizer's unity build an anonymous type captured by the
+// model's lambdas draws -Wsubobject-linkage.
+namespace mdbc {
 
 // Below this |det| the first-order system is too near singular to trust (as DualSPHysics).
 constexpr double smallestDeterminant = 1e-3;
@@ -39,7 +41,7 @@ struct GhostNodeDensity {
     }
 };
 
-}  // namespace
+}  // namespace mdbc
 
 template <int D>
 ModifiedDynamicBoundaryEnglish2022<D>::ModifiedDynamicBoundaryEnglish2022(const Dictionary& dict)
@@ -81,7 +83,7 @@ void ModifiedDynamicBoundaryEnglish2022<D>::updateWalls(const BoundaryView<D>& v
             for (std::size_t w = begin; w < end; ++w) {
                 const double depth = (layer[w] + firstLayerOffset_) * spacing[w];
                 const Vec<D> ghost = xWall[w] + 2.0 * depth * normal[w];
-                GhostNodeDensity<D> density;
+                mdbc::GhostNodeDensity<D> density;
                 cells.forEachNeighbour(ghost, radius, [&](std::uint32_t f, const Vec<D>& r, double r2) {
                     const double distance = std::sqrt(r2);
                     density.add(mFluid[f] / rhoFluid[f], mFluid[f], r, kernel.value(distance), kernel.gradientFactor(distance));

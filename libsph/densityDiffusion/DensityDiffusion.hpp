@@ -10,6 +10,7 @@
 #include "io/Dictionary.hpp"
 #include "physics/ModelContext.hpp"
 
+#include <concepts>
 #include <string>
 #include <variant>
 
@@ -17,6 +18,23 @@ namespace sph {
 
 template <int D>
 using DensityDiffusion = std::variant<NoDensityDiffusion, MolteniColagrossi2009, Fourtakas2019<D>, Antuono2010>;
+
+// What the pair loop asks of a density diffusion: whether it has a term at all (a case without
+// one compiles none), and if so the rates a pair adds to i and j from six numbers: g.r_ij, r^2,
+// 1/(r^2 + 0.01 h^2), rho_i, rho_j, F; or, where usesDensityGradient, r^2, 1/(r^2 + 0.01 h^2),
+// rho_i, rho_j, F and (grad rho_i + grad rho_j).r_ij.
+template <class M>
+concept DensityDiffusionModel = requires {
+    { M::enabled } -> std::convertible_to<bool>;
+}
+&&(!M::enabled || requires(const M diffusion, double value, double& rate) {
+    { diffusion.pairRates(value, value, value, value, value, value, rate, rate) } -> std::same_as<void>;
+});
+template <class Family>
+inline constexpr bool allDensityDiffusions = false;
+template <class... Models>
+inline constexpr bool allDensityDiffusions<std::variant<Models...>> = (DensityDiffusionModel<Models> && ...);
+static_assert(allDensityDiffusions<DensityDiffusion<1>> && allDensityDiffusions<DensityDiffusion<2>> && allDensityDiffusions<DensityDiffusion<3>>);
 
 template <int D>
 using DensityDiffusionRegistry = Registry<DensityDiffusion<D>, const Dictionary&, const ModelContext&>;
