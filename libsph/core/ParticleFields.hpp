@@ -32,7 +32,7 @@ inline constexpr ScalarField mass{"mass"};
 
 // Wall particles: the surface they sample and what their patch's model sets.
 inline constexpr IntegerField patch{"patch"};
-inline constexpr IntegerField layer{"layer"};  // 0 on the wall surface, counted into the wall
+inline constexpr IntegerField layer{"layer"};  // 0 for the layer nearest the fluid, counted into the wall
 inline constexpr VectorField normal{"normal"};
 inline constexpr ScalarField area{"area"};
 inline constexpr ScalarField spacing{"spacing"};
