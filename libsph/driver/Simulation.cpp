@@ -2,18 +2,14 @@
 
 #include "driver/BlowUpCheck.hpp"
 #include "driver/CaseDirectory.hpp"
+#include "driver/CaseOutput.hpp"
 #include "driver/FluidSetup.hpp"
+#include "driver/FunctionObjectSchedule.hpp"
 #include "driver/Progress.hpp"
 #include "driver/RestartState.hpp"
 #include "driver/RunControls.hpp"
 #include "driver/StopRequest.hpp"
 #include "driver/Threads.hpp"
-#include "functionObjects/FunctionObject.hpp"
-#include "io/AtomicFile.hpp"
-#include "io/ParticleCsv.hpp"
-#include "io/ParticleFile.hpp"
-#include "io/PvdCollection.hpp"
-#include "io/SelectByType.hpp"
 #include "io/TimeName.hpp"
 #include "physics/FluidSystem.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
@@ -30,180 +26,80 @@ namespace {
 // Reordering the fluid by cell costs a pass over every field; particles move little per step.
 constexpr long stepsBetweenCellSorts = 10;
 
-template <int D>
-struct FunctionObjectEntry {
-    std::string name;
-    std::unique_ptr<FunctionObject<D>> object;
-    double interval;
-    double nextTime;
+// A step of at most the stable size, shortened to land on `target`. Returns the time reached
+// and the step the integrator took (an adaptive one may take less than asked).
+struct StepTaken {
+    double time;
+    double size;
 };
 
+// Sorts the fluid by cell every few steps, counted from the run's first step rather than this
+// invocation's so that a restart sorts where the uninterrupted run did; shifts and wraps the
+// particles after the step.
 template <int D>
-std::vector<FunctionObjectEntry<D>> readFunctionObjects(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime,
-                                                        double rho0, const FluidSystem<D>& system) {
-    std::vector<FunctionObjectEntry<D>> entries;
-    const Dictionary* functions = controlDict.findSubDict("functions");
-    if (!functions) return entries;
-    const auto registry = makeFunctionObjectRegistry<D>();
-    for (const std::string& name : functions->keywords()) {
-        const Dictionary& dict = functions->subDict(name);
-        const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system.view()};
-        auto object = selectByType(registry, dict, dict, context);
-        const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
-        fmt::print("Selecting function object {} ({})\n", name, object->describe());
-        entries.push_back({name, std::move(object), interval, startTime});
-    }
-    return entries;
-}
-
-struct RunCost {
-    double wallSeconds;
-    std::size_t fluidParticles;
-    long steps;
-};
-
-// A run whose function objects compare with a reference ends with one line of every error
-// against the run's cost, and the same in postProcessing/summary/<startTime>/summary.csv.
-template <int D>
-void reportErrorAgainstCost(const std::vector<FunctionObjectEntry<D>>& functionObjects, const std::filesystem::path& caseDirectory, double startTime,
-                            double endTime, const RunCost& cost) {
-    std::vector<std::string> figures;
-    std::string csv = "functionObject,quantity,L1,L2,Linf,normalisation,wallTime_s,fluidParticles,steps,particleSteps_per_s,startTime,endTime\n";
-    const double rate = cost.wallSeconds > 0.0 ? static_cast<double>(cost.fluidParticles) * static_cast<double>(cost.steps) / cost.wallSeconds : 0.0;
-    for (const auto& entry : functionObjects)
-        for (const ReportedError& error : entry.object->errors()) {
-            figures.push_back(fmt::format("{} {}: L1 {:.3e}, L2 {:.3e}, Linf {:.3e} ({})", entry.name, error.quantity, error.norms.l1, error.norms.l2,
-                                          error.norms.linf, error.normalisation));
-            csv += fmt::format("{},{},{:.6e},{:.6e},{:.6e},\"{}\",{:.4f},{},{},{:.6e},{:.9g},{:.9g}\n", entry.name, error.quantity, error.norms.l1,
-                               error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate,
-                               startTime, endTime);
-        }
-    if (figures.empty()) return;
-    fmt::print("Error against run time: {}; wall time {:.2f} s, {} fluid particles, {} steps\n", fmt::join(figures, "; "), cost.wallSeconds,
-               cost.fluidParticles, cost.steps);
-    const auto directory = caseDirectory / "postProcessing" / "summary" / timeName(startTime);
-    std::filesystem::create_directories(directory);
-    writeTextAtomically(directory / "summary.csv", csv);
-}
-
-template <int D>
-void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode,
-         std::optional<int> threads) {
-    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+StepTaken advanceOneStep(CaseSetup<D>& setup, double t, long step, double target, double timeTolerance) {
     FluidSystem<D>& system = *setup.system;
-    const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     TimeIntegrator<D>& integrator = *setup.integrator;
-    // The exact time from the state file: a directory name holds only its first digits.
-    const double startTime = setup.header.time;
-    const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
-
-    RunControls controls = RunControls::read(controlDict);
-    const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
-    ControlDictWatcher watcher(caseDirectory / "system/controlDict", controlDict.getOrDefault("runTimeModifiable", true));
-    if (mode == RunMode::TimeLoop && !(controls.endTime > startTime))
-        controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
-    for (const Patch<D>& patch : system.patches)
-        if (patch.motion) patch.motion->checkCovers(startTime, controls.endTime);
-    auto functionObjects = readFunctionObjects<D>(controlDict, caseDirectory, startTime, setup.rho0, system);
-    controlDict.checkUnused();
-    for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
-
-    PvdCollection pvd(caseDirectory / (caseName(caseDirectory) + ".pvd"));
-    for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
-        if (written.time <= start.time)
-            pvd.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
-
-    StateHeader header = setup.header;
-    const auto writeState = [&](const std::filesystem::path& directory, double t, long step) {
-        header.time = t;
-        header.step = step;
-        collectRestartState(system, integrator, setup.integratorType, header);
-        StateHeader wallHeader = header;
-        wallHeader.patchNames = setup.patchNames;
-        writeParticleFile(directory / "fluid.vtu", system.fluid, header);
-        writeParticleFile(directory / "walls.vtu", system.walls, wallHeader);
-    };
-    const auto write = [&](double t, long step) {
-        auto timer = system.timers.time(Stage::Output);
-        const std::string name = timeName(t);
-        writeDirectoryAtomically(caseDirectory / name, [&](const std::filesystem::path& directory) {
-            writeState(directory, t, step);
-            if (writeCsv) {
-                writeParticleCsv(directory / "fluid.csv", system.fluid);
-                writeParticleCsv(directory / "walls.csv", system.walls);
-            }
-        });
-        pvd.add(t, {name + "/fluid.vtu", name + "/walls.vtu"});
-    };
-    if (mode == RunMode::RatesOnly) {
-        system.evaluateRates(startTime);
-        const auto directory = caseDirectory / "postProcessing" / "rates" / timeName(startTime);
-        writeDirectoryAtomically(directory, [&](const std::filesystem::path& temporary) {
-            writeState(temporary, startTime, header.step);
-            writeParticleCsv(temporary / "fluid.csv", system.fluid);
-            writeParticleCsv(temporary / "walls.csv", system.walls);
-        });
-        fmt::print("\nWrote the right-hand side at t = {:g} to {}\n", startTime, directory.string());
-        return;
+    if (integrator.allowsReordering() && step % stepsBetweenCellSorts == 0) {
+        system.sortFluidByCell();
+        integrator.stateChangedOutside();
     }
-    const auto runFunctionObjects = [&](double t, bool force) {
-        auto timer = system.timers.time(Stage::FunctionObjects);
-        for (auto& entry : functionObjects) {
-            // Executes at the first step at or after each multiple of the interval, and at the end.
-            if (!force && t < entry.nextTime - 1e-6 * entry.interval) continue;
-            entry.object->execute(system.view(), t);
-            while (entry.nextTime <= t + 1e-6 * entry.interval && entry.interval > 0.0) entry.nextTime += entry.interval;
-        }
-    };
+    double dt = setup.fixedDeltaT > 0.0 ? setup.fixedDeltaT
+                                        : std::min(system.stableTimeStep(setup.courant, !integrator.viscosityImplicit()), setup.maxDeltaT);
+    if (t + dt > target - timeTolerance) dt = target - t;
+    const double taken = integrator.step(system, t, dt);
+    if (system.shiftsParticles()) {
+        system.shiftParticles(taken);
+        integrator.stateChangedOutside();
+    }
+    if (system.wrapPeriodic()) integrator.stateChangedOutside();
+    return {(taken >= dt && t + dt > target - timeTolerance) ? target : t + taken, taken};
+}
 
-    fmt::print("\nStarting time loop at t = {:g} (from {}), endTime {:g}, writeInterval {:g}\n\n", startTime, start.path.string(), controls.endTime,
-               controls.writeInterval);
-    double t = startTime;
-    long step = header.step;
-    restoreRestartState(system, integrator, setup.integratorType, setup.header, t, (start.path / "fluid.vtu").string());
-    runFunctionObjects(t, true);
+// From the start state to endTime, or to a stop signal (which writes the time reached).
+template <int D>
+RunCost timeLoop(const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup, RunControls controls,
+                 ControlDictWatcher& watcher, CaseOutput<D>& output, FunctionObjectSchedule<D>& functionObjects) {
+    FluidSystem<D>& system = *setup.system;
+    const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
+    const auto executeFunctionObjects = [&](double t, bool force) {
+        auto timer = system.timers.time(Stage::FunctionObjects);
+        functionObjects.execute(system.view(), t, force);
+    };
+    fmt::print("\nStarting time loop at t = {:g} (from {}), endTime {:g}, writeInterval {:g}\n\n", setup.header.time, start.path.string(),
+               controls.endTime, controls.writeInterval);
+    // The exact time from the state file: a directory name holds only its first digits.
+    double t = setup.header.time;
+    long step = setup.header.step;
+    restoreRestartState(system, *setup.integrator, setup.integratorType, setup.header, t, (start.path / "fluid.vtu").string());
+    executeFunctionObjects(t, true);
     Progress progress(t, controls.endTime, system.fluid.size());
     double nextWrite = controls.nextWriteAfter(t);
     const long firstStep = step;
-    double dt = 0.0;
     const StopRequest stopRequest;
     while (true) {
         const double timeTolerance = 1e-9 * controls.writeInterval;
         if (t >= controls.endTime - timeTolerance) break;
-        // Counted from the run's first step, not this invocation's, so a restart sorts when the uninterrupted run did.
-        if (integrator.allowsReordering() && step % stepsBetweenCellSorts == 0) {
-            system.sortFluidByCell();
-            integrator.stateChangedOutside();
-        }
-        dt = setup.fixedDeltaT > 0.0 ? setup.fixedDeltaT
-                                     : std::min(system.stableTimeStep(setup.courant, !integrator.viscosityImplicit()), setup.maxDeltaT);
         // Land on write times and on endTime exactly.
-        const double target = std::min(nextWrite, controls.endTime);
-        if (t + dt > target - timeTolerance) dt = target - t;
-        const double taken = integrator.step(system, t, dt);
-        if (system.shiftsParticles()) {
-            system.shiftParticles(taken);
-            integrator.stateChangedOutside();
-        }
-        if (system.wrapPeriodic()) integrator.stateChangedOutside();
-        t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
+        const StepTaken taken = advanceOneStep(setup, t, step, std::min(nextWrite, controls.endTime), timeTolerance);
+        t = taken.time;
         ++step;
         checkFluidState(system.fluid, system.domainMin(), system.domainMax(), {c0, setup.rho0}, step, t);
         const bool last = t >= controls.endTime - timeTolerance;
         if (const int signal = stopRequest.signal(); signal != 0 && !last) {
-            runFunctionObjects(t, true);
-            write(t, step);
+            executeFunctionObjects(t, true);
+            output.writeTime(t, step);
             progress.finish();
             fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}; rerun to continue from it\n", signalName(signal),
                        step, t, (caseDirectory / timeName(t)).string());
             break;
         }
-        runFunctionObjects(t, last);
+        executeFunctionObjects(t, last);
         if (t >= nextWrite - timeTolerance || last) {
-            write(t, step);
+            output.writeTime(t, step);
             nextWrite = controls.nextWriteAfter(t);
         }
-        progress.update(step, t, taken);
+        progress.update(step, t, taken.size);
         if (const auto changed = watcher.changed(controls, t)) {
             controls = *changed;
             nextWrite = controls.nextWriteAfter(t);
@@ -211,11 +107,15 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         }
     }
     progress.finish();
+    return {progress.elapsedSeconds(), system.fluid.size(), step - firstStep, t};
+}
 
-    const double wall = progress.elapsedSeconds();
-    const long steps = step - firstStep;
-    const double particleSteps = static_cast<double>(steps) * static_cast<double>(system.fluid.size());
-    fmt::print("\nEnd at t = {:g}: {} steps, {} fluid + {} wall particles\n", t, steps, system.fluid.size(), system.walls.size());
+// The run's closing report: particle-steps/s, the integrator's counters, the time per stage.
+template <int D>
+void printRunReport(const FluidSystem<D>& system, const TimeIntegrator<D>& integrator, const RunCost& cost) {
+    const double wall = cost.wallSeconds;
+    const double particleSteps = static_cast<double>(cost.steps) * static_cast<double>(system.fluid.size());
+    fmt::print("\nEnd at t = {:g}: {} steps, {} fluid + {} wall particles\n", cost.endTime, cost.steps, system.fluid.size(), system.walls.size());
     fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
     fmt::print("Integrator counters:\n");
     for (const auto& [name, value] : integrator.counters()) fmt::print("    {:<32} {}\n", name, value);
@@ -230,7 +130,36 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         printPart(stageNames[s], seconds);
     }
     printPart("other", std::max(0.0, wall - accounted));  // solver internals (SUNDIALS), checks, progress
-    reportErrorAgainstCost(functionObjects, caseDirectory, startTime, t, {wall, system.fluid.size(), steps});
+}
+
+template <int D>
+void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start, RunMode mode,
+         std::optional<int> threads) {
+    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+    FluidSystem<D>& system = *setup.system;
+    const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
+    const double startTime = setup.header.time;
+
+    const RunControls controls = RunControls::read(controlDict);
+    const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
+    ControlDictWatcher watcher(caseDirectory / "system/controlDict", controlDict.getOrDefault("runTimeModifiable", true));
+    if (mode == RunMode::TimeLoop && !(controls.endTime > startTime))
+        controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
+    for (const Patch<D>& patch : system.patches)
+        if (patch.motion) patch.motion->checkCovers(startTime, controls.endTime);
+    FunctionObjectSchedule<D> functionObjects(controlDict, caseDirectory, startTime, setup.rho0, system.view());
+    controlDict.checkUnused();
+    for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
+
+    CaseOutput<D> output(caseDirectory, start, setup, writeCsv);
+    if (mode == RunMode::RatesOnly) {
+        system.evaluateRates(startTime);
+        output.writeRates(startTime);
+        return;
+    }
+    const RunCost cost = timeLoop(caseDirectory, start, setup, controls, watcher, output, functionObjects);
+    printRunReport(system, *setup.integrator, cost);
+    functionObjects.reportErrorAgainstCost(caseDirectory, startTime, cost);
 }
 
 }  // namespace

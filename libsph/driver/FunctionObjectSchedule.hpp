@@ -1,0 +1,48 @@
+// The function objects of controlDict's `functions`, each executed at its executeInterval, and
+// the run's closing line of every error they measured against the run's cost.
+#pragma once
+
+#include "io/Dictionary.hpp"
+#include "functionObjects/FunctionObject.hpp"
+#include "physics/FluidSystemView.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+struct RunCost {
+    double wallSeconds;
+    std::size_t fluidParticles;
+    long steps;
+    double endTime;
+};
+
+template <int D>
+class FunctionObjectSchedule {
+public:
+    // Selects each entry of `functions` by its type; none when controlDict has no `functions`.
+    FunctionObjectSchedule(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime, double rho0,
+                           const FluidSystemView<D>& system);
+
+    // Executes each object at the first step at or after each multiple of its interval, or
+    // every object when `force` (the start, the end, a stop).
+    void execute(const FluidSystemView<D>& system, double t, bool force);
+
+    // One console line of every error against the run's cost, and the same in
+    // postProcessing/summary/<startTime>/summary.csv; nothing when no object compares.
+    void reportErrorAgainstCost(const std::filesystem::path& caseDirectory, double startTime, const RunCost& cost) const;
+
+private:
+    struct Entry {
+        std::string name;
+        std::unique_ptr<FunctionObject<D>> object;
+        double interval;
+        double nextTime;
+    };
+    std::vector<Entry> entries_;
+};
+
+}  // namespace sph
