@@ -13,7 +13,67 @@ void permuteValues(std::vector<T>& values, const std::vector<std::uint32_t>& ord
     values.swap(reordered);
 }
 
+template <class Map, class Table>
+void pointSlotsInto(Map& fields, Table& slots) {
+    slots.fill(nullptr);
+    for (auto& [name, field] : fields)
+        if (const int slot = librarySlot(name); slot >= 0) slots[slot] = &field;
+}
+
 }  // namespace
+
+template <int D>
+void ParticleSet<D>::fillSlots() {
+    pointSlotsInto(scalars_, scalarSlots_);
+    pointSlotsInto(vectors_, vectorSlots_);
+    pointSlotsInto(integers_, integerSlots_);
+}
+
+template <int D>
+ParticleSet<D>::ParticleSet(const ParticleSet& other)
+    : position(other.position),
+      globalId(other.globalId),
+      name_(other.name_),
+      owned_(other.owned_),
+      scalars_(other.scalars_),
+      vectors_(other.vectors_),
+      integers_(other.integers_) {
+    fillSlots();
+}
+
+template <int D>
+ParticleSet<D>::ParticleSet(ParticleSet&& other) noexcept
+    : position(std::move(other.position)),
+      globalId(std::move(other.globalId)),
+      name_(std::move(other.name_)),
+      owned_(other.owned_),
+      scalars_(std::move(other.scalars_)),
+      vectors_(std::move(other.vectors_)),
+      integers_(std::move(other.integers_)) {
+    fillSlots();
+    other.fillSlots();
+}
+
+template <int D>
+ParticleSet<D>& ParticleSet<D>::operator=(const ParticleSet& other) {
+    if (this != &other) *this = ParticleSet(other);
+    return *this;
+}
+
+template <int D>
+ParticleSet<D>& ParticleSet<D>::operator=(ParticleSet&& other) noexcept {
+    if (this == &other) return *this;
+    position = std::move(other.position);
+    globalId = std::move(other.globalId);
+    name_ = std::move(other.name_);
+    owned_ = other.owned_;
+    scalars_ = std::move(other.scalars_);
+    vectors_ = std::move(other.vectors_);
+    integers_ = std::move(other.integers_);
+    fillSlots();
+    other.fillSlots();
+    return *this;
+}
 
 template <int D>
 void ParticleSet<D>::resize(std::size_t owned) {

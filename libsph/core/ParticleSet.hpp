@@ -7,6 +7,7 @@
 #include "core/ParticleFields.hpp"
 #include "core/Vector.hpp"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -21,6 +22,12 @@ template <int D>
 class ParticleSet {
 public:
     explicit ParticleSet(std::string name) : name_(std::move(name)) {}
+    // The slots point into the fields' map nodes: a copy points into its own.
+    ParticleSet(const ParticleSet& other);
+    ParticleSet(ParticleSet&& other) noexcept;
+    ParticleSet& operator=(const ParticleSet& other);
+    ParticleSet& operator=(ParticleSet&& other) noexcept;
+    ~ParticleSet() = default;
 
     const std::string& name() const { return name_; }
     std::size_t size() const { return position.size(); }
@@ -39,39 +46,43 @@ public:
     // fields every step.
     template <class Value>
     std::vector<ValueOf<Value>>& add(FieldKey<Value> field, const ValueOf<Value>& initial, bool written = true) {
-        auto& fields = storage<Value>();
-        auto it = fields.find(field.name);
-        if (it == fields.end())
-            it = fields.emplace(std::string(field.name), Field<ValueOf<Value>>{std::vector<ValueOf<Value>>(size(), initial), false}).first;
-        it->second.written = it->second.written || written;
-        return it->second.values;
+        Field<ValueOf<Value>>* existing = find(field);
+        if (!existing) {
+            auto& added = storage<Value>()
+                              .emplace(std::string(field.name), Field<ValueOf<Value>>{std::vector<ValueOf<Value>>(size(), initial), false})
+                              .first->second;
+            if (field.slot >= 0) slots<Value>()[field.slot] = &added;
+            existing = &added;
+        }
+        existing->written = existing->written || written;
+        return existing->values;
     }
 
     template <class Value>
     bool has(FieldKey<Value> field) const {
-        return storage<Value>().count(field.name) != 0;
+        return find(field) != nullptr;
     }
 
     // A field that must exist (a programming error otherwise).
     template <class Value>
     std::vector<ValueOf<Value>>& operator[](FieldKey<Value> field) {
-        return valuesOf(storage<Value>(), field.name);
+        return existing(field).values;
     }
     template <class Value>
     const std::vector<ValueOf<Value>>& operator[](FieldKey<Value> field) const {
-        return valuesOf(storage<Value>(), field.name);
+        return existing(field).values;
     }
 
     // A field the case may not have (wall acceleration of fixed walls, say): nullptr without it.
     template <class Value>
     ValueOf<Value>* optionalData(FieldKey<Value> field) {
-        auto it = storage<Value>().find(field.name);
-        return it == storage<Value>().end() ? nullptr : it->second.values.data();
+        auto* found = find(field);
+        return found ? found->values.data() : nullptr;
     }
     template <class Value>
     const ValueOf<Value>* optionalData(FieldKey<Value> field) const {
-        auto it = storage<Value>().find(field.name);
-        return it == storage<Value>().end() ? nullptr : it->second.values.data();
+        const auto* found = find(field);
+        return found ? found->values.data() : nullptr;
     }
 
     // new[i] = old[order[i]] for every field.
@@ -89,31 +100,53 @@ public:
     const FieldMap<int>& integers() const { return integers_; }
 
 private:
+    // Of three members, one per value type, the one for Value.
+    template <class Value, class Scalars, class Vectors, class Integers>
+    static auto& ofType(Scalars& scalars, Vectors& vectors, Integers& integers) {
+        if constexpr (std::is_same_v<Value, double>)
+            return scalars;
+        else if constexpr (std::is_same_v<Value, VectorValued>)
+            return vectors;
+        else
+            return integers;
+    }
     template <class Value>
     FieldMap<ValueOf<Value>>& storage() {
-        if constexpr (std::is_same_v<Value, double>)
-            return scalars_;
-        else if constexpr (std::is_same_v<Value, VectorValued>)
-            return vectors_;
-        else
-            return integers_;
+        return ofType<Value>(scalars_, vectors_, integers_);
+    }
+    template <class T>
+    using SlotTable = std::array<Field<T>*, libraryFieldNames.size()>;
+    template <class Value>
+    SlotTable<ValueOf<Value>>& slots() {
+        return ofType<Value>(scalarSlots_, vectorSlots_, integerSlots_);
+    }
+    // A library field by its slot; a user's field by its name. nullptr when the set lacks it.
+    template <class Value>
+    Field<ValueOf<Value>>* find(FieldKey<Value> field) {
+        if (field.slot >= 0) return slots<Value>()[field.slot];
+        auto it = storage<Value>().find(field.name);
+        return it == storage<Value>().end() ? nullptr : &it->second;
     }
     template <class Value>
-    const FieldMap<ValueOf<Value>>& storage() const {
-        return const_cast<ParticleSet*>(this)->storage<Value>();
+    const Field<ValueOf<Value>>* find(FieldKey<Value> field) const {
+        return const_cast<ParticleSet*>(this)->find(field);
     }
-    template <class Map>
-    auto& valuesOf(Map& fields, std::string_view field) const {
-        auto it = fields.find(field);
-        if (it == fields.end()) throw std::logic_error("particle set '" + name_ + "' has no field '" + std::string(field) + "'");
-        return it->second.values;
+    template <class Value>
+    Field<ValueOf<Value>>& existing(FieldKey<Value> field) const {
+        Field<ValueOf<Value>>* found = const_cast<ParticleSet*>(this)->find(field);
+        if (!found) throw std::logic_error("particle set '" + name_ + "' has no field '" + std::string(field.name) + "'");
+        return *found;
     }
+    void fillSlots();
 
     std::string name_;
     std::size_t owned_ = 0;
     FieldMap<double> scalars_;
     FieldMap<Vec<D>> vectors_;
     FieldMap<int> integers_;
+    SlotTable<double> scalarSlots_{};
+    SlotTable<Vec<D>> vectorSlots_{};
+    SlotTable<int> integerSlots_{};
 };
 
 }  // namespace sph

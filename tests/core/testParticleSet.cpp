@@ -79,3 +79,42 @@ TEST(ParticleSet, AFieldThatMustExistNamesTheSetAndTheField) {
         EXPECT_STREQ(e.what(), "particle set 'fluid' has no field 'densityRate'");
     }
 }
+
+// Library fields are found by slot; a key made at run time from a library name finds the same
+// field, and a user's field (no slot) is found by name.
+static_assert(fields::velocity.slot == 0 && fields::freeSurfaceLambda.slot == 22);
+static_assert(sph::ScalarField{"myTracer"}.slot == -1);
+
+TEST(ParticleSet, AKeyMadeFromANameFindsTheLibraryFieldOfThatName) {
+    ParticleSet<2> set("fluid");
+    set.resize(2);
+    auto& read = set.add(sph::ScalarField{"density"}, 998.0);  // as the state-file reader does
+    EXPECT_EQ(&set[fields::density], &read);
+    set.add(sph::ScalarField{"myTracer"}, 0.5);
+    EXPECT_EQ(set[sph::ScalarField{"myTracer"}], std::vector<double>(2, 0.5));
+    EXPECT_FALSE(set.has(sph::ScalarField{"otherTracer"}));
+}
+
+TEST(ParticleSet, ACopyOwnsItsFieldsAndAMoveKeepsThem) {
+    ParticleSet<2> original("fluid");
+    original.resize(2);
+    original.add(fields::density, 1000.0);
+    ParticleSet<2> copy = original;
+    copy[fields::density][0] = 1.0;
+    EXPECT_EQ(original[fields::density][0], 1000.0);
+    copy.add(fields::pressure, 3.0);
+    EXPECT_FALSE(original.has(fields::pressure));
+
+    ParticleSet<2> assigned("walls");
+    assigned = copy;
+    assigned[fields::pressure][1] = 4.0;
+    EXPECT_EQ(copy[fields::pressure][1], 3.0);
+
+    const double* data = copy[fields::density].data();
+    ParticleSet<2> moved = std::move(copy);
+    EXPECT_EQ(moved[fields::density].data(), data);
+    EXPECT_EQ(moved[fields::pressure], std::vector<double>(2, 3.0));
+    EXPECT_FALSE(copy.has(fields::density));  // NOLINT(bugprone-use-after-move): a moved-from set is empty, not dangling
+    assigned = std::move(moved);
+    EXPECT_EQ(assigned[fields::density].data(), data);
+}
