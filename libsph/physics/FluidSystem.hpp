@@ -23,7 +23,6 @@
 
 #include "boundaryModels/BoundaryModel.hpp"
 #include "core/ParticleSet.hpp"
-#include "core/StageTimers.hpp"
 #include "densityDiffusion/DensityDiffusion.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
@@ -34,6 +33,7 @@
 #include "physics/ParticleShiftingScratch.hpp"
 #include "particleShifting/ParticleShifting.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
+#include "timeIntegrators/IntegrableSystem.hpp"
 #include "viscosity/Viscosity.hpp"
 
 #include <memory>
@@ -45,10 +45,6 @@ namespace sph {
 
 enum class DensityFormulation { Summation, Continuity };
 
-// Which terms an evaluation computes. An implicit-explicit integrator splits the right-hand
-// side: the viscous acceleration (implicit) apart from everything else (explicit).
-enum class RateTerms { All, AllButViscous, ViscousOnly };
-
 template <int D>
 struct FluidModels {
     Kernel<D> kernel;
@@ -59,30 +55,36 @@ struct FluidModels {
     ParticleShifting shifting{};  // none unless the case selects one
 };
 
+// What an integrator sees of it, the particle sets and the right-hand side, is its base
+// IntegrableSystem (timeIntegrators/IntegrableSystem.hpp).
 template <int D>
-class FluidSystem {
+class FluidSystem final : public IntegrableSystem<D> {
 public:
+    // Inside a generic lambda GCC 12 still needs this->fluid, this->walls.
+    using IntegrableSystem<D>::fluid;
+    using IntegrableSystem<D>::walls;
+    using IntegrableSystem<D>::timers;
+
     // Takes the particle sets as read from the state files: the fluid set must hold velocity,
     // density and mass; the wall set position, normal, area, mass and patch, sorted by patch.
     FluidSystem(FluidModels<D> models, ParticleSet<D> fluid, ParticleSet<D> walls, std::vector<Patch<D>> patches, const Vec<D>& domainMin,
                 const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime, const std::array<bool, D>& periodic = {});
 
     // Free bodies: the integrator advances them with the fluid (see FreeBody2D).
-    void predictBodies(double halfDt);
-    void correctBodies(double dt);
+    void predictBodies(double halfDt) override;
+    void correctBodies(double dt) override;
+    std::vector<std::string> freeBodyPatches() const override;
 
     // Brings fluid particles that crossed a periodic side back into the domain; call between
     // steps. Returns whether any particle moved.
     bool wrapPeriodic();
     const std::array<bool, D>& periodic() const { return periodic_; }
 
-    // The cell lists refer to the particle arrays of this object: it never moves.
-    FluidSystem(const FluidSystem&) = delete;
-    FluidSystem& operator=(const FluidSystem&) = delete;
-
     // Fills acceleration (and density rate with continuity) of the fluid, and the wall state.
     // With ViscousOnly, the acceleration is the viscous term alone and the density rates are zero.
-    void evaluateRates(double t, RateTerms terms = RateTerms::All);
+    // The cell lists refer to the particle arrays of this object, which never moves (its base
+    // is neither copied nor moved).
+    void evaluateRates(double t, RateTerms terms = RateTerms::All) override;
 
     // Moves every fluid particle by dt times its shifting velocity (written as the field
     // shiftingVelocity), from the state at the end of a step; call between steps only. Leaves
@@ -101,8 +103,10 @@ public:
     Vec<D> gravityAt(double t) const;
     double smoothingLength() const;
     double supportRadius() const { return supportRadius_; }
-    bool continuity() const { return models_.density == DensityFormulation::Continuity; }
-    bool wallDensityEvolves() const { return wallDensityEvolves_; }
+    bool continuity() const override { return models_.density == DensityFormulation::Continuity; }
+    bool wallDensityEvolves() const override { return wallDensityEvolves_; }
+    StateScales scales() const override;
+    const Viscosity& viscosity() const override { return models_.viscosity; }
     const FluidModels<D>& models() const { return models_; }
     const Vec<D>& domainMin() const { return domainMin_; }
     const Vec<D>& domainMax() const { return domainMax_; }
@@ -110,10 +114,7 @@ public:
     BoundaryView<D> boundaryView(double t);
     FluidSystemView<D> view() const;
 
-    ParticleSet<D> fluid;
-    ParticleSet<D> walls;
     std::vector<Patch<D>> patches;
-    StageTimers timers;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }

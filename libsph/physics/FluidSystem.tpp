@@ -39,8 +39,7 @@ template <int D>
 FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, ParticleSet<D> wallSet, std::vector<Patch<D>> patchList,
                             const Vec<D>& domainMin, const Vec<D>& domainMax, const Vec<D>& gravity, double gravityRampTime,
                             const std::array<bool, D>& periodic)
-    : fluid(std::move(fluidSet)),
-      walls(std::move(wallSet)),
+    : IntegrableSystem<D>(std::move(fluidSet), std::move(wallSet)),
       patches(std::move(patchList)),
       models_(std::move(models)),
       domainMin_(domainMin),
@@ -132,6 +131,12 @@ double FluidSystem<D>::smoothingLength() const {
 }
 
 template <int D>
+StateScales FluidSystem<D>::scales() const {
+    const auto [speedOfSound, referenceDensity] = std::visit([](const auto& e) { return std::pair(e.c0, e.rho0); }, models_.eos);
+    return {smoothingLength(), speedOfSound, referenceDensity};
+}
+
+template <int D>
 Vec<D> FluidSystem<D>::gravityAt(double t) const {
     return gravity_.at(t);
 }
@@ -209,17 +214,25 @@ void FluidSystem<D>::correctBodies(double dt) {
 }
 
 template <int D>
+std::vector<std::string> FluidSystem<D>::freeBodyPatches() const {
+    std::vector<std::string> names;
+    for (const Patch<D>& patch : patches)
+        if (patch.motion && patch.motion->isFree()) names.push_back(patch.name);
+    return names;
+}
+
+template <int D>
 void FluidSystem<D>::computeSummationDensity() {
     std::visit(
         [this](const auto& kernel) {
             if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
                 throw std::logic_error(pairLoopsNotCompiled);
             } else {
-                const std::size_t n = fluid.ownedCount();
-                const Vec<D>* x = fluid.position.data();
-                const double* mass = fluid[fields::mass].data();
-                const double* wallMass = walls[fields::mass].data();
-                double* rho = fluid[fields::density].data();
+                const std::size_t n = this->fluid.ownedCount();
+                const Vec<D>* x = this->fluid.position.data();
+                const double* mass = this->fluid[fields::mass].data();
+                const double* wallMass = this->walls[fields::mass].data();
+                double* rho = this->fluid[fields::density].data();
                 const double radius = supportRadius_;
 #pragma omp parallel for schedule(static)
                 for (std::size_t i = 0; i < n; ++i) {
@@ -292,8 +305,8 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
             } else if (terms == RateTerms::AllButViscous) {
                 dispatch.template operator()<false>(kernel, viscosity, diffusion);
             } else {
-                std::fill(fluid[fields::acceleration].begin(), fluid[fields::acceleration].end(), Vec<D>::Zero());
-                if (continuity()) std::fill(fluid[fields::densityRate].begin(), fluid[fields::densityRate].end(), 0.0);
+                std::fill(this->fluid[fields::acceleration].begin(), this->fluid[fields::acceleration].end(), Vec<D>::Zero());
+                if (continuity()) std::fill(this->fluid[fields::densityRate].begin(), this->fluid[fields::densityRate].end(), 0.0);
             }
         },
         models_.kernel, models_.viscosity, pairDiffusion);

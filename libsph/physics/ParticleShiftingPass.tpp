@@ -253,8 +253,8 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 throw std::logic_error(pairLoopsNotCompiled);
             } else {
                 const auto& cells = fluidCells_;
-                const bool anyWalls = walls.size() > 0;
-                const double* wallArea = anyWalls ? walls.optionalData(fields::area) : nullptr;
+                const bool anyWalls = this->walls.size() > 0;
+                const double* wallArea = anyWalls ? this->walls.optionalData(fields::area) : nullptr;
                 const bool oneLayerWalls =
                     wallArea != nullptr && std::any_of(patches.begin(), patches.end(), [](const Patch<D>& p) { return p.cells.has_value(); });
                 ParticleShiftingScratch<D>& scratch = shiftingScratch_;
@@ -275,18 +275,18 @@ void FluidSystem<D>::shiftParticles(double dt) {
                                           1.0 / kernel.value(models_.shifting.dx),
                                           models_.shifting.dx,
                                           models_.shifting.surface,
-                                          fluid.position.data(),
+                                          this->fluid.position.data(),
                                           v,
-                                          fluid[fields::mass].data(),
-                                          fluid[fields::density].data(),
-                                          anyWalls ? walls[fields::mass].data() : nullptr,
-                                          anyWalls ? walls[fields::density].data() : nullptr,
-                                          anyWalls ? walls[fields::normal].data() : nullptr,
+                                          this->fluid[fields::mass].data(),
+                                          this->fluid[fields::density].data(),
+                                          anyWalls ? this->walls[fields::mass].data() : nullptr,
+                                          anyWalls ? this->walls[fields::density].data() : nullptr,
+                                          anyWalls ? this->walls[fields::normal].data() : nullptr,
                                           wallArea,
                                           oneLayerWalls,
                                           continuity(),
-                                          fluid[fields::shiftingVelocity].data(),
-                                          fluid[fields::freeSurfaceLambda].data()};
+                                          this->fluid[fields::shiftingVelocity].data(),
+                                          this->fluid[fields::freeSurfaceLambda].data()};
 #pragma omp parallel for schedule(static)
                 for (std::size_t j = 0; j < cells.pointCount(); ++j) in.scratch.volume[j] = in.m[j] / in.rho[j];
                 auto& sumsOfThread = in.scratch.sumsOfThread;

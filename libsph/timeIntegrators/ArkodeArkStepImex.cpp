@@ -48,11 +48,11 @@ std::string ArkodeArkStepImex<D>::describe() const {
 }
 
 template <int D>
-void ArkodeArkStepImex<D>::checkCompatible(const FluidSystem<D>& system, const Dictionary& dict) const {
+void ArkodeArkStepImex<D>::checkCompatible(const IntegrableSystem<D>& system, const Dictionary& dict) const {
     TimeIntegrator<D>::checkCompatible(system, dict);
-    if (krylov_.jacobian == JacobianTimesVector::VelocityBlock && !std::holds_alternative<LaminarViscosityMorris1997>(system.models().viscosity))
+    if (krylov_.jacobian == JacobianTimesVector::VelocityBlock && !std::holds_alternative<LaminarViscosityMorris1997>(system.viscosity()))
         dict.fail("jacobianTimesVector", "velocityBlock is exact only for a viscosity linear in velocity (laminar); the case selects " +
-                                             sph::describe(system.models().viscosity) + "; use differenceQuotient");
+                                             sph::describe(system.viscosity()) + "; use differenceQuotient");
 }
 
 template <int D>
@@ -71,7 +71,7 @@ int ArkodeArkStepImex<D>::jacobianTimes(N_Vector w, N_Vector Jw, double t, N_Vec
 }
 
 template <int D>
-void ArkodeArkStepImex<D>::create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) {
+void ArkodeArkStepImex<D>::create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) {
     void*& memory = this->memory_;
     memory = ARKStepCreate(explicitPart, implicitPart, t, y, this->state_.context());
     if (!memory) throw FatalError("error: could not create the ARKODE ARKStep integrator");

@@ -26,13 +26,13 @@ public:
     ~ArkodeArkStepImex() override;
     std::string describe() const override;
     bool viscosityImplicit() const override { return true; }
-    void checkCompatible(const FluidSystem<D>& system, const Dictionary& dict) const override;
+    void checkCompatible(const IntegrableSystem<D>& system, const Dictionary& dict) const override;
 
     static std::vector<std::string> tableNames();
 
 protected:
     using typename SundialsIntegrator<D>::Counts;
-    void create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) override;
+    void create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) override;
     void release() override;
     int advance(double t, double dt, double& reached) override;
     std::string flagName(int flag) const override;

@@ -39,7 +39,7 @@ int ArkodeErkStep<D>::rightHandSide(double t, N_Vector y, N_Vector ydot, void* s
 }
 
 template <int D>
-void ArkodeErkStep<D>::create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) {
+void ArkodeErkStep<D>::create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) {
     void*& memory = this->memory_;
     memory = ERKStepCreate(rightHandSide, t, y, this->state_.context());
     if (!memory) throw FatalError("error: could not create the ARKODE ERKStep integrator");

@@ -30,7 +30,7 @@ int CvodeBdf<D>::rightHandSide(double t, N_Vector y, N_Vector ydot, void* self) 
 }
 
 template <int D>
-void CvodeBdf<D>::create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) {
+void CvodeBdf<D>::create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) {
     void*& memory = this->memory_;
     memory = CVodeCreate(CV_BDF, this->state_.context());
     if (!memory || CVodeInit(memory, rightHandSide, t, y) != CV_SUCCESS) throw FatalError("error: could not create the CVODE integrator");

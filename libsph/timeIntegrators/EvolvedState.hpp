@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/ParticleSet.hpp"
-#include "physics/FluidSystem.hpp"
+#include "timeIntegrators/IntegrableSystem.hpp"
 
 #include <vector>
 
@@ -19,7 +19,7 @@ void addScaled(std::vector<T>& out, const std::vector<T>& base, double c, const 
 
 // The particle sets whose "density" evolves with the rate "densityRate", with their owned counts.
 template <int D>
-std::vector<ParticleSet<D>*> evolvedDensitySets(FluidSystem<D>& system) {
+std::vector<ParticleSet<D>*> evolvedDensitySets(IntegrableSystem<D>& system) {
     std::vector<ParticleSet<D>*> sets;
     if (system.continuity()) sets.push_back(&system.fluid);
     if (system.wallDensityEvolves()) sets.push_back(&system.walls);
@@ -32,7 +32,7 @@ struct StepStart {
     std::vector<Vec<D>> position, velocity;
     std::vector<std::vector<double>> density;  // per set of evolvedDensitySets
 
-    void save(FluidSystem<D>& system, const std::vector<ParticleSet<D>*>& densitySets) {
+    void save(IntegrableSystem<D>& system, const std::vector<ParticleSet<D>*>& densitySets) {
         position = system.fluid.position;
         velocity = system.fluid[fields::velocity];
         density.resize(densitySets.size());

@@ -5,7 +5,7 @@
 namespace sph {
 
 template <int D>
-double LeapfrogKickDriftKick<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+double LeapfrogKickDriftKick<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& v = fluid[fields::velocity];

@@ -25,7 +25,7 @@ public:
     bool carriesPredictedRates() const override { return true; }
 
 protected:
-    double takeStep(FluidSystem<D>& system, double t, double dt) override;
+    double takeStep(IntegrableSystem<D>& system, double t, double dt) override;
 
 private:
     std::vector<Vec<D>> halfStepVelocity_;

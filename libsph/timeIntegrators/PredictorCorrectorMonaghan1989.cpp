@@ -16,7 +16,7 @@ void extrapolate(std::vector<T>& y, const std::vector<T>& start, std::size_t n) 
 }  // namespace
 
 template <int D>
-double PredictorCorrectorMonaghan1989<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+double PredictorCorrectorMonaghan1989<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& x = fluid.position;

@@ -19,7 +19,7 @@ public:
     std::string describe() const override { return "predictorCorrector (Monaghan 1989)"; }
 
 protected:
-    double takeStep(FluidSystem<D>& system, double t, double dt) override;
+    double takeStep(IntegrableSystem<D>& system, double t, double dt) override;
 
 private:
     StepStart<D> start_;

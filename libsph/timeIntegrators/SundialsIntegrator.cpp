@@ -3,7 +3,7 @@
 namespace sph {
 
 template <int D>
-double SundialsIntegrator<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     system_ = &system;
     if (restart_ || !memory_) {
         N_Vector y = state_.wrap(system);
@@ -12,7 +12,7 @@ double SundialsIntegrator<D>::takeStep(FluidSystem<D>& system, double t, double 
             release();
         }
         create(system, t, y, lastStep_);
-        state_.markEvaluated(t);  // on entry the rates at t are current
+        state_.markEvaluated(system, t);  // on entry the rates at t are current
         restart_ = false;
     }
     double reached = t;
@@ -20,7 +20,7 @@ double SundialsIntegrator<D>::takeStep(FluidSystem<D>& system, double t, double 
     if (flag < 0) failIntegration(solverName_, flagName(flag), reached, state_.lastFailure());
     lastStep_ = lastStep();
     this->evaluate(system, reached);
-    state_.markEvaluated(reached);
+    state_.markEvaluated(system, reached);
     return reached - t;
 }
 

@@ -18,7 +18,7 @@ public:
     // A restarted run starts from the step size reached; the error controller's history and
     // CVODE's BDF history are rebuilt, so it agrees with the uninterrupted run to the tolerances.
     std::vector<double> savedState() const override { return {lastStep_}; }
-    void resume(const FluidSystem<D>&, const std::vector<double>& saved) override {
+    void resume(const IntegrableSystem<D>&, const std::vector<double>& saved) override {
         if (saved.size() == 1 && saved[0] > 0.0 && std::isfinite(saved[0])) lastStep_ = saved[0];
     }
     std::vector<std::pair<std::string, long>> counters() const override;
@@ -29,11 +29,11 @@ protected:
     };
 
     explicit SundialsIntegrator(std::string solverName, bool implicitSolve) : solverName_(std::move(solverName)), implicitSolve_(implicitSolve) {}
-    double takeStep(FluidSystem<D>& system, double t, double dt) final;
+    double takeStep(IntegrableSystem<D>& system, double t, double dt) final;
 
     // One SUNDIALS package: create its memory at (t, y) with `initialStep` (0: its own guess),
     // free it, take one step to at most t + dt, name a return flag, read its last step and counters.
-    virtual void create(FluidSystem<D>& system, double t, N_Vector y, double initialStep) = 0;
+    virtual void create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) = 0;
     virtual void release() = 0;
     virtual int advance(double t, double dt, double& reached) = 0;
     virtual std::string flagName(int flag) const = 0;
@@ -46,7 +46,7 @@ protected:
 
     SundialsState<D> state_;
     void* memory_ = nullptr;
-    FluidSystem<D>* system_ = nullptr;
+    IntegrableSystem<D>* system_ = nullptr;
 
 private:
     std::string solverName_;

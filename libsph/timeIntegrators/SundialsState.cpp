@@ -68,7 +68,7 @@ SundialsState<D>::~SundialsState() {
 }
 
 template <int D>
-std::vector<std::pair<double*, std::size_t>> SundialsState<D>::blocks(FluidSystem<D>& system) const {
+std::vector<std::pair<double*, std::size_t>> SundialsState<D>::blocks(IntegrableSystem<D>& system) const {
     static_assert(sizeof(Vec<D>) == D * sizeof(double), "particle vectors must be packed doubles to be wrapped");
     const std::size_t n = system.fluid.ownedCount();
     std::vector<std::pair<double*, std::size_t>> result{{system.fluid.position.data()->data(), n * D},
@@ -78,7 +78,7 @@ std::vector<std::pair<double*, std::size_t>> SundialsState<D>::blocks(FluidSyste
 }
 
 template <int D>
-N_Vector SundialsState<D>::wrap(FluidSystem<D>& system) {
+N_Vector SundialsState<D>::wrap(IntegrableSystem<D>& system) {
     if (wrapped_) N_VDestroy(wrapped_);
     for (N_Vector part : parts_) N_VDestroy(part);
     parts_.clear();
@@ -89,31 +89,44 @@ N_Vector SundialsState<D>::wrap(FluidSystem<D>& system) {
 }
 
 template <int D>
-N_Vector SundialsState<D>::absoluteTolerances(const FluidSystem<D>& system, double absolute) {
+N_Vector SundialsState<D>::absoluteTolerances(const IntegrableSystem<D>& system, double absolute) {
     if (absoluteTolerances_) N_VDestroy(absoluteTolerances_);
     absoluteTolerances_ = N_VClone(wrapped_);
-    const double c0 = std::visit([](const auto& e) { return e.c0; }, system.models().eos);
-    const double rho0 = std::visit([](const auto& e) { return e.rho0; }, system.models().eos);
-    const double h = system.smoothingLength();  // the length the positions are resolved to
+    const StateScales scales = system.scales();
     for (sunindextype k = 0; k < N_VGetNumSubvectors_ManyVector(absoluteTolerances_); ++k) {
-        const double scale = k == 0 ? h : k == 1 ? c0 : rho0;
+        const double scale = k == 0 ? scales.smoothingLength : k == 1 ? scales.speedOfSound : scales.referenceDensity;
         N_VConst(absolute * scale, N_VGetSubvector_ManyVector(absoluteTolerances_, k));
     }
     return absoluteTolerances_;
 }
 
 template <int D>
-bool SundialsState<D>::holdsState(FluidSystem<D>& system, N_Vector y) const {
+void SundialsState<D>::markEvaluated(IntegrableSystem<D>& system, double t) {
+    evaluatedState_.clear();
+    for (const auto& [data, size] : blocks(system)) evaluatedState_.insert(evaluatedState_.end(), data, data + size);
+    evaluatedTime_ = t;
+    evaluatedValid_ = true;
+}
+
+// y against the copy, not against the system's arrays: in ARK_ONE_STEP mode ARKODE computes its
+// stages in the output vector, which wraps those arrays, so y may be those arrays and still not
+// the state the rates were evaluated at (a second stage at the same time, a FSAL stage).
+template <int D>
+bool SundialsState<D>::isEvaluatedState(IntegrableSystem<D>& system, N_Vector y) const {
+    std::size_t offset = 0;
     const auto parts = blocks(system);
     for (std::size_t k = 0; k < parts.size(); ++k) {
+        const std::size_t size = parts[k].second;
+        if (offset + size > evaluatedState_.size()) return false;
         const double* data = N_VGetSubvectorArrayPointer_ManyVector(y, static_cast<sunindextype>(k));
-        if (data != parts[k].first && std::memcmp(data, parts[k].first, parts[k].second * sizeof(double)) != 0) return false;
+        if (std::memcmp(data, evaluatedState_.data() + offset, size * sizeof(double)) != 0) return false;
+        offset += size;
     }
     return true;
 }
 
 template <int D>
-void SundialsState<D>::load(FluidSystem<D>& system, N_Vector y) {
+void SundialsState<D>::load(IntegrableSystem<D>& system, N_Vector y) {
     const auto parts = blocks(system);
     for (std::size_t k = 0; k < parts.size(); ++k) {
         const double* data = N_VGetSubvectorArrayPointer_ManyVector(y, static_cast<sunindextype>(k));
@@ -123,16 +136,16 @@ void SundialsState<D>::load(FluidSystem<D>& system, N_Vector y) {
 }
 
 template <int D>
-int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
+int SundialsState<D>::rates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
                             const std::function<void(double, RateTerms)>& evaluate) {
     try {
-        const bool cached = terms == RateTerms::All && evaluatedValid_ && t == evaluatedTime_ && holdsState(system, y);
+        const bool cached = terms == RateTerms::All && evaluatedValid_ && t == evaluatedTime_ && isEvaluatedState(system, y);
         if (!cached) {
             auto timer = system.timers.time(Stage::Integrator);
             load(system, y);
         }
         if (!cached) evaluate(t, terms);
-        if (terms == RateTerms::All) markEvaluated(t);
+        if (terms == RateTerms::All) markEvaluated(system, t);
         auto timer = system.timers.time(Stage::Integrator);
         const std::size_t n = system.fluid.ownedCount();
         const bool viscousOnly = terms == RateTerms::ViscousOnly;
@@ -169,7 +182,7 @@ int SundialsState<D>::rates(FluidSystem<D>& system, double t, N_Vector y, N_Vect
 }
 
 template <int D>
-int SundialsState<D>::viscousJacobianTimes(FluidSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
+int SundialsState<D>::viscousJacobianTimes(IntegrableSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
                                            const std::function<void(double, RateTerms)>& evaluate) {
     try {
         load(system, y);

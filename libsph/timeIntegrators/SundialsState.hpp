@@ -1,4 +1,4 @@
-// The bridge between SUNDIALS and a FluidSystem, shared by the ARKODE and CVODE integrators.
+// The bridge between SUNDIALS and an IntegrableSystem, shared by the ARKODE and CVODE integrators.
 //
 // The state vector is an N_Vector ManyVector whose serial subvectors wrap the particle arrays
 // themselves (fluid position, velocity, and each density that follows the continuity
@@ -13,7 +13,7 @@
 #pragma once
 
 #include "io/Dictionary.hpp"
-#include "physics/FluidSystem.hpp"
+#include "timeIntegrators/IntegrableSystem.hpp"
 
 #include <nvector/nvector_manyvector.h>
 #include <sundials/sundials_context.h>
@@ -67,36 +67,40 @@ public:
     SUNContext context() const { return context_; }
 
     // (Re)wraps the particle arrays; call after the system's arrays moved (reordering).
-    N_Vector wrap(FluidSystem<D>& system);
+    N_Vector wrap(IntegrableSystem<D>& system);
     N_Vector wrapped() const { return wrapped_; }
 
     // Per-component absolute tolerances, scaled as in SundialsTolerances.
-    N_Vector absoluteTolerances(const FluidSystem<D>& system, double absolute);
+    N_Vector absoluteTolerances(const IntegrableSystem<D>& system, double absolute);
 
     // The right-hand side f(t, y) -> ydot of the given terms; returns 0, or 1 (recoverable).
     // `evaluate` runs the system's evaluation (the integrator counts it).
-    int rates(FluidSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms, const std::function<void(double, RateTerms)>& evaluate);
+    int rates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
+              const std::function<void(double, RateTerms)>& evaluate);
 
     // J w for the implicit viscous part with positions and densities frozen: the viscous
     // acceleration is linear in velocity (laminar viscosity), so J w = a_v(v + w) - a_v(v).
-    int viscousJacobianTimes(FluidSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
+    int viscousJacobianTimes(IntegrableSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
                              const std::function<void(double, RateTerms)>& evaluate);
 
-    // Records that the particle arrays hold the state at t with all rates evaluated.
-    void markEvaluated(double t) { evaluatedTime_ = t, evaluatedValid_ = true; }
+    // Records that the system's rates are all evaluated at t and at the state its arrays hold
+    // now, keeping a copy of that state: SUNDIALS may later write stage values into the very
+    // arrays it wraps.
+    void markEvaluated(IntegrableSystem<D>& system, double t);
 
     // The message of the last failed right-hand side, for the error report.
     const std::string& lastFailure() const { return lastFailure_; }
 
 private:
-    void load(FluidSystem<D>& system, N_Vector y);
-    bool holdsState(FluidSystem<D>& system, N_Vector y) const;
-    std::vector<std::pair<double*, std::size_t>> blocks(FluidSystem<D>& system) const;
+    void load(IntegrableSystem<D>& system, N_Vector y);
+    bool isEvaluatedState(IntegrableSystem<D>& system, N_Vector y) const;
+    std::vector<std::pair<double*, std::size_t>> blocks(IntegrableSystem<D>& system) const;
 
     SUNContext context_ = nullptr;
     std::vector<N_Vector> parts_;
     N_Vector wrapped_ = nullptr;
     N_Vector absoluteTolerances_ = nullptr;
+    std::vector<double> evaluatedState_;  // where the system's rates were last evaluated, at evaluatedTime_
     double evaluatedTime_ = 0.0;
     bool evaluatedValid_ = false;
     std::string lastFailure_;

@@ -1,6 +1,6 @@
 #include "timeIntegrators/SymplecticPositionVerlet.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "timeIntegrators/IntegrableSystem.hpp"
 #include "timeIntegrators/EvolvedState.hpp"
 
 namespace sph {
@@ -20,7 +20,7 @@ void correctDensity(std::vector<double>& rho, const std::vector<double>& rhoStar
 }  // namespace
 
 template <int D>
-double SymplecticPositionVerlet<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+double SymplecticPositionVerlet<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     auto& fluid = system.fluid;
     const std::size_t n = fluid.ownedCount();
     auto& x = fluid.position;

@@ -22,7 +22,7 @@ public:
     bool advancesFreeBodies() const override { return true; }
 
 protected:
-    double takeStep(FluidSystem<D>& system, double t, double dt) override;
+    double takeStep(IntegrableSystem<D>& system, double t, double dt) override;
 
 private:
     StepStart<D> start_;

@@ -1,6 +1,6 @@
 #include "timeIntegrators/TimeIntegrator.hpp"
 
-#include "physics/FluidSystem.hpp"
+#include "timeIntegrators/IntegrableSystem.hpp"
 #include "timeIntegrators/ArkodeArkStepImex.hpp"
 #include "timeIntegrators/ArkodeErkStep.hpp"
 #include "timeIntegrators/CvodeBdf.hpp"
@@ -16,12 +16,12 @@
 namespace sph {
 
 template <int D>
-void TimeIntegrator<D>::evaluate(FluidSystem<D>& system, double t) {
+void TimeIntegrator<D>::evaluate(IntegrableSystem<D>& system, double t) {
     evaluate(system, t, RateTerms::All);
 }
 
 template <int D>
-void TimeIntegrator<D>::evaluate(FluidSystem<D>& system, double t, RateTerms terms) {
+void TimeIntegrator<D>::evaluate(IntegrableSystem<D>& system, double t, RateTerms terms) {
     ++evaluations_;
     system.evaluateRates(t, terms);
 }
@@ -32,12 +32,10 @@ std::vector<std::pair<std::string, long>> TimeIntegrator<D>::counters() const {
 }
 
 template <int D>
-void TimeIntegrator<D>::checkCompatible(const FluidSystem<D>& system, const Dictionary& dict) const {
+void TimeIntegrator<D>::checkCompatible(const IntegrableSystem<D>& system, const Dictionary& dict) const {
     if (advancesFreeBodies()) return;
-    for (const Patch<D>& patch : system.patches)
-        if (patch.motion && patch.motion->isFree())
-            dict.fail("type",
-                      fmt::format("patch '{}' is a free body, which only the symplectic integrator advances; found {}", patch.name, describe()));
+    for (const std::string& patch : system.freeBodyPatches())
+        dict.fail("type", fmt::format("patch '{}' is a free body, which only the symplectic integrator advances; found {}", patch, describe()));
 }
 
 namespace {

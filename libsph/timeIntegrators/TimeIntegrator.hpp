@@ -1,4 +1,4 @@
-// The time-integrator family. An integrator advances the FluidSystem's state (fluid position,
+// The time-integrator family. An integrator advances an IntegrableSystem's state (fluid position,
 // velocity, density with continuity, and wall density where a boundary model evolves it)
 // by one step, calling evaluate() for the right-hand side. On entry the rates at the start of
 // the step are current; on exit they are current at its end.
@@ -15,7 +15,7 @@
 namespace sph {
 
 template <int D>
-class FluidSystem;
+class IntegrableSystem;
 
 enum class RateTerms;
 
@@ -27,7 +27,7 @@ public:
 
     // Advances from t by dt, or by less where an adaptive integrator's error control asks;
     // returns the step taken.
-    double step(FluidSystem<D>& system, double t, double dt) {
+    double step(IntegrableSystem<D>& system, double t, double dt) {
         ++steps_;
         return takeStep(system, t, dt);
     }
@@ -40,7 +40,7 @@ public:
     // with each state, and handed back before the first step of a restarted run (an empty
     // `saved`: the state was written by another integrator, or by generateParticles).
     virtual std::vector<double> savedState() const { return {}; }
-    virtual void resume(const FluidSystem<D>& /*system*/, const std::vector<double>& /*saved*/) {}
+    virtual void resume(const IntegrableSystem<D>& /*system*/, const std::vector<double>& /*saved*/) {}
     // True when the rates it ends a step with were evaluated at a predicted state, not the one
     // written: a restart then keeps the written rates instead of re-evaluating them.
     virtual bool carriesPredictedRates() const { return false; }
@@ -52,16 +52,16 @@ public:
 
     // Stops before the first step if the case selected what this integrator cannot advance;
     // `dict` is the integrator's dictionary, for the message.
-    virtual void checkCompatible(const FluidSystem<D>& system, const Dictionary& dict) const;
+    virtual void checkCompatible(const IntegrableSystem<D>& system, const Dictionary& dict) const;
 
     // Name and value of each counter, for the end-of-run report.
     virtual std::vector<std::pair<std::string, long>> counters() const;
     long rateEvaluations() const { return evaluations_; }
 
 protected:
-    virtual double takeStep(FluidSystem<D>& system, double t, double dt) = 0;
-    void evaluate(FluidSystem<D>& system, double t);
-    void evaluate(FluidSystem<D>& system, double t, RateTerms terms);
+    virtual double takeStep(IntegrableSystem<D>& system, double t, double dt) = 0;
+    void evaluate(IntegrableSystem<D>& system, double t);
+    void evaluate(IntegrableSystem<D>& system, double t, RateTerms terms);
     long steps() const { return steps_; }
 
 private:

@@ -12,7 +12,7 @@ std::string VerletMonaghan1994<D>::describe() const {
 }
 
 template <int D>
-void VerletMonaghan1994<D>::resume(const FluidSystem<D>& system, const std::vector<double>& saved) {
+void VerletMonaghan1994<D>::resume(const IntegrableSystem<D>& system, const std::vector<double>& saved) {
     // Without the previous level (a state from another integrator) the next step is an Euler step.
     const bool previousLevelWritten = system.fluid.has(fields::previousVelocity) &&
                                       (!system.continuity() || system.fluid.has(fields::previousDensity)) &&
@@ -21,7 +21,7 @@ void VerletMonaghan1994<D>::resume(const FluidSystem<D>& system, const std::vect
 }
 
 template <int D>
-double VerletMonaghan1994<D>::takeStep(FluidSystem<D>& system, double t, double dt) {
+double VerletMonaghan1994<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     {
         auto timer = system.timers.time(Stage::Integrator);
         const bool euler = stepsSinceEuler_ < 0 || stepsSinceEuler_ + 1 >= eulerEvery_;

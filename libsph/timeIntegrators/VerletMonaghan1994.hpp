@@ -21,10 +21,10 @@ public:
     explicit VerletMonaghan1994(int eulerEvery) : eulerEvery_(eulerEvery) {}
     std::string describe() const override;
     std::vector<double> savedState() const override { return {static_cast<double>(stepsSinceEuler_)}; }
-    void resume(const FluidSystem<D>& system, const std::vector<double>& saved) override;
+    void resume(const IntegrableSystem<D>& system, const std::vector<double>& saved) override;
 
 protected:
-    double takeStep(FluidSystem<D>& system, double t, double dt) override;
+    double takeStep(IntegrableSystem<D>& system, double t, double dt) override;
 
 private:
     int eulerEvery_;
