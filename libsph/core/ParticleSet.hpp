@@ -46,16 +46,16 @@ public:
     // fields every step.
     template <class Value>
     std::vector<ValueOf<Value>>& add(FieldKey<Value> field, const ValueOf<Value>& initial, bool written = true) {
-        Field<ValueOf<Value>>* existing = find(field);
-        if (!existing) {
+        Field<ValueOf<Value>>* found = find(field);
+        if (!found) {
             auto& added = storage<Value>()
                               .emplace(std::string(field.name), Field<ValueOf<Value>>{std::vector<ValueOf<Value>>(size(), initial), false})
                               .first->second;
             if (field.slot >= 0) slots<Value>()[field.slot] = &added;
-            existing = &added;
+            found = &added;
         }
-        existing->written = existing->written || written;
-        return existing->values;
+        found->written = found->written || written;
+        return found->values;
     }
 
     template <class Value>
