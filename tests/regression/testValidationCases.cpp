@@ -122,9 +122,10 @@ TEST(ValidationCases, EllipticalDropFollowsTheOde) {
 
 TEST(ValidationCases, SphericTest2GaugesStartAtTheReservoirDepth) {
     // The shipped case (its extents fix dx = 0.025: 43,120 fluid particles) for 0.002 s: it reads,
-    // its gauges and probes run against the measured series, and the reservoir gauge reads the depth.
+    // its gauges, probes and wall sensors run against the measured series, and the reservoir gauge
+    // reads the depth.
     const auto rows = runVariant("damBreak3D", {{"system/controlDict", "endTime", "0.002"}, {"system/controlDict", "writeInterval", "0.002"}});
-    ASSERT_EQ(rows.size(), 8u);  // 4 gauges, 4 pressure probes
+    ASSERT_EQ(rows.size(), 16u);  // 4 gauges, 4 pressure probes, 8 wall sensors
     EXPECT_EQ(rows[3].quantity, "height at gauge 3");
     // Analytic: gauge 4 stands in the 0.55 m reservoir; the experiment's 0.5467 m at t = 0 is
     // within 0.007 m of it, and nothing moves that far in 0.002 s, so the error is under 2 % of 0.55.
@@ -132,6 +133,8 @@ TEST(ValidationCases, SphericTest2GaugesStartAtTheReservoirDepth) {
     // The dry gauges and probes read zero, the experiment's sensor offsets of about 1e-3 of the scale.
     EXPECT_LT(rows[0].linf, 2e-3);
     EXPECT_TRUE(std::isnan(rows[4].l1)) << "the pressure record starts at 0.363 s: nothing to compare yet";
+    EXPECT_EQ(rows[15].quantity, "averaged pressure at sensor 7");
+    EXPECT_TRUE(std::isnan(rows[15].l1)) << "the wall sensors compare with the same record";
 }
 
 TEST(ValidationCases, LidDrivenCavityApproachesGhia) {
