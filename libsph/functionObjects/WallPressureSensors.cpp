@@ -28,6 +28,7 @@ WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const Functi
     // The patch's particles on the wall surface, where it was generated.
     const auto& walls = system.walls;
     const auto& x0 = walls.has(fields::initialPosition) ? walls[fields::initialPosition] : walls.position;
+    const auto& n0 = walls.has(fields::initialNormal) ? walls[fields::initialNormal] : walls[fields::normal];
     const std::vector<int>* layer = walls.has(fields::layer) ? &walls[fields::layer] : nullptr;
     std::vector<std::size_t> surface;
     double spacing = 0.0;
@@ -39,18 +40,25 @@ WallPressureSensors<D>::WallPressureSensors(const Dictionary& dict, const Functi
     if (surface.empty()) dict.fail("patch", fmt::format("patch '{}' has no wall particles", patchName_));
     size_ = dict.getPositiveOrDefault("size", spacing);
     for (std::size_t k = 0; k < points_.size(); ++k) {
-        std::vector<std::size_t> members;
         std::size_t nearest = surface.front();
-        for (const std::size_t j : surface) {
-            const double distance = (x0[j] - points_[k]).norm();
-            if (distance <= 0.5 * size_) members.push_back(j);
-            if (distance < (x0[nearest] - points_[k]).norm()) nearest = j;
-        }
+        for (const std::size_t j : surface)
+            if ((x0[j] - points_[k]).norm() < (x0[nearest] - points_[k]).norm()) nearest = j;
         const double gap = (x0[nearest] - points_[k]).norm();
         if (gap > 0.5 * size_ + spacing)
             dict.fail("points", fmt::format("sensor {} at ({:g}) is {:g} from the surface of patch '{}' (nearest wall particle at ({:g})); "
                                             "place sensors on the wall",
                                             k, fmt::join(points_[k], " "), gap, patchName_, fmt::join(x0[nearest], " ")));
+        // The footprint lies in the wall's plane at the sensor, normal to its nearest particle's
+        // normal: a particle of layer 0 on a layered wall lies half a spacing behind the surface,
+        // which a distance in space would count against it, and a corner particle beside the
+        // sensor does not lie in that plane.
+        const Vec<D> normal = n0[nearest];
+        std::vector<std::size_t> members;
+        for (const std::size_t j : surface) {
+            const Vec<D> offset = x0[j] - points_[k];
+            const double across = offset.dot(normal);
+            if ((offset - across * normal).norm() <= 0.5 * size_ && std::abs(across) <= std::max(spacing, 0.5 * size_)) members.push_back(j);
+        }
         if (members.empty()) members.push_back(nearest);  // a sensor smaller than the spacing
         members_.push_back(std::move(members));
     }

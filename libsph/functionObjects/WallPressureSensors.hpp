@@ -1,7 +1,9 @@
 // wallPressure: pressure sensors on a wall patch, over time, as an experiment's transducers
-// read it: each sensor averages the pressure of the patch's wall particles on the wall surface
-// (layer 0) within its footprint, |x_j - c| <= size/2 (a segment along the wall in 2D, a disc
-// in 3D), weighted by their areas A_j:
+// read it: each sensor averages the pressure of the patch's wall particles of layer 0 within its
+// footprint, a segment along the wall in 2D, a disc in 3D, in the plane normal to the normal n
+// of the particle nearest the centre c: x_j - c less its part along n at most size/2 long, its
+// part along n at most a spacing (layer 0 lies half a spacing behind the surface on layered
+// walls), weighted by their areas A_j:
 //   p_sensor = sum_j A_j p_j / sum_j A_j
 // (equal weights where the footprint holds only particles without area); a sensor smaller than
 // the spacing reads the nearest surface particle. p_j is the wall particle's own pressure where

@@ -370,6 +370,20 @@ TEST(WallPressureSensors, AverageTheModelsWallPressureOverTheirFootprintByArea) 
     EXPECT_NEAR(read("points ((0.5 0)); size 0.18;")[0], (3.0 * 44.0 + 48.0 + 52.0 + 56.0) / 6.0, 1e-9);
 }
 
+TEST(WallPressureSensors, TheFootprintIsMeasuredAlongTheWallNotAcrossIt) {
+    const auto dir = freshDirectory();
+    auto system = makeBlockOnAFloor(dummyParticles());
+    auto& p = system->walls[fields::pressure];
+    for (std::size_t j = 0; j < p.size(); ++j) {
+        p[j] = 100.0 * system->walls.position[j].x();
+        system->walls.position[j].y() = -0.5 * dx;  // layer 0 of a layered wall, half a spacing below the surface y = 0
+    }
+    // Particles at 0.48 and 0.52 lie 0.02 from the centre along the wall and 0.028 in space.
+    const WallPressureSensors<2> sensor(Dictionary::fromString("type wallPressure; patch floor; points ((0.5 0)); size 0.048;", "sensors"),
+                                        contextFor(dir, *system));
+    EXPECT_NEAR(sensor.pressures(system->view(), 0.0)[0], 50.0, 1e-9);
+}
+
 TEST(WallPressureSensors, SourceFluidExtrapolatesWhereTheModelSetsAPressure) {
     const auto dir = freshDirectory();
     auto system = makeBlockOnAFloor(dummyParticles());
