@@ -122,7 +122,7 @@ bool SundialsState<D>::isEvaluatedState(IntegrableSystem<D>& system, N_Vector y)
         if (std::memcmp(data, evaluatedState_.data() + offset, size * sizeof(double)) != 0) return false;
         offset += size;
     }
-    return true;
+    return offset == evaluatedState_.size();
 }
 
 template <int D>
@@ -145,7 +145,7 @@ int SundialsState<D>::rates(IntegrableSystem<D>& system, double t, N_Vector y, N
             load(system, y);
         }
         if (!cached) evaluate(t, terms);
-        if (terms == RateTerms::All) markEvaluated(system, t);
+        if (terms == RateTerms::All && !cached) markEvaluated(system, t);
         auto timer = system.timers.time(Stage::Integrator);
         const std::size_t n = system.fluid.ownedCount();
         const bool viscousOnly = terms == RateTerms::ViscousOnly;
