@@ -8,7 +8,7 @@ namespace {
 
 template <class T>
 void permuteValues(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
-    std::vector<T> reordered(values.size());
+    std::vector<T> reordered(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) reordered[i] = values[order[i]];
     values.swap(reordered);
 }
@@ -76,22 +76,44 @@ ParticleSet<D>& ParticleSet<D>::operator=(ParticleSet&& other) noexcept {
 }
 
 template <int D>
-void ParticleSet<D>::resize(std::size_t owned) {
-    owned_ = owned;
-    position.resize(owned, Vec<D>::Zero());
-    globalId.resize(owned, -1);
-    for (auto& [name, f] : scalars_) f.values.resize(owned, 0.0);
-    for (auto& [name, f] : vectors_) f.values.resize(owned, Vec<D>::Zero());
-    for (auto& [name, f] : integers_) f.values.resize(owned, 0);
+void ParticleSet<D>::resizeArrays(std::size_t count) {
+    position.resize(count, Vec<D>::Zero());
+    globalId.resize(count, -1);
+    for (auto& [name, f] : scalars_) f.values.resize(count, 0.0);
+    for (auto& [name, f] : vectors_) f.values.resize(count, Vec<D>::Zero());
+    for (auto& [name, f] : integers_) f.values.resize(count, 0);
 }
 
 template <int D>
-void ParticleSet<D>::permute(const std::vector<std::uint32_t>& order) {
+void ParticleSet<D>::resize(std::size_t owned) {
+    owned_ = owned;
+    resizeArrays(owned);
+}
+
+template <int D>
+void ParticleSet<D>::resizeHalos(std::size_t halos) {
+    resizeArrays(owned_ + halos);
+}
+
+template <int D>
+void ParticleSet<D>::reorderArrays(const std::vector<std::uint32_t>& order) {
     permuteValues(position, order);
     permuteValues(globalId, order);
     for (auto& [name, f] : scalars_) permuteValues(f.values, order);
     for (auto& [name, f] : vectors_) permuteValues(f.values, order);
     for (auto& [name, f] : integers_) permuteValues(f.values, order);
+}
+
+template <int D>
+void ParticleSet<D>::permute(const std::vector<std::uint32_t>& order) {
+    if (order.size() != size()) throw std::logic_error("a permutation of '" + name_ + "' must list every particle once");
+    reorderArrays(order);
+}
+
+template <int D>
+void ParticleSet<D>::keep(const std::vector<std::uint32_t>& order) {
+    reorderArrays(order);
+    owned_ = order.size();
 }
 
 template class ParticleSet<1>;

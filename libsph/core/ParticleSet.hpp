@@ -32,7 +32,10 @@ public:
     const std::string& name() const { return name_; }
     std::size_t size() const { return position.size(); }
     std::size_t ownedCount() const { return owned_; }
-    void resize(std::size_t owned);  // every field follows; no halos yet
+    std::size_t haloCount() const { return size() - owned_; }
+    void resize(std::size_t owned);  // every field follows; drops the halos
+    // Room for `halos` copies after the owned particles (values to be filled by the caller).
+    void resizeHalos(std::size_t halos);
 
     std::vector<Vec<D>> position;
     std::vector<std::int64_t> globalId;
@@ -87,6 +90,8 @@ public:
 
     // new[i] = old[order[i]] for every field.
     void permute(const std::vector<std::uint32_t>& order);
+    // The same for a selection: the set then holds order.size() owned particles and no halos.
+    void keep(const std::vector<std::uint32_t>& order);
 
     template <class T>
     struct Field {
@@ -138,6 +143,8 @@ private:
         return *found;
     }
     void fillSlots();
+    void resizeArrays(std::size_t count);
+    void reorderArrays(const std::vector<std::uint32_t>& order);
 
     std::string name_;
     std::size_t owned_ = 0;

@@ -47,6 +47,25 @@ TEST(ParticleSet, FieldsFollowTheParticlesAndTheirOrder) {
     EXPECT_EQ(set[fields::velocity][4], Vec<2>::Zero());
 }
 
+TEST(ParticleSet, HalosFollowTheOwnedParticlesAndASelectionDropsThem) {
+    ParticleSet<2> set("fluid");
+    set.resize(3);
+    auto& density = set.add(fields::density, 1.0);
+    density = {1.0, 2.0, 3.0};
+    set.globalId = {10, 11, 12};
+    set.resizeHalos(2);
+    EXPECT_EQ(set.ownedCount(), 3u);
+    EXPECT_EQ(set.haloCount(), 2u);
+    EXPECT_EQ(set[fields::density].size(), 5u);
+    EXPECT_EQ(set[fields::density][2], 3.0);
+    set.keep({2, 0});
+    EXPECT_EQ(set.ownedCount(), 2u);
+    EXPECT_EQ(set.haloCount(), 0u);
+    EXPECT_EQ(set.globalId, (std::vector<std::int64_t>{12, 10}));
+    EXPECT_EQ(set[fields::density], (std::vector<double>{3.0, 1.0}));
+    EXPECT_THROW(set.permute({0}), std::logic_error);  // a permutation lists every particle
+}
+
 TEST(ParticleSet, AddingAFieldTwiceKeepsItsValuesAndWritesItIfEitherAsks) {
     ParticleSet<2> set("walls");
     set.resize(2);

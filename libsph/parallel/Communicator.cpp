@@ -1,0 +1,70 @@
+#include "parallel/Communicator.hpp"
+
+#include "core/FatalError.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+namespace sph::parallel {
+
+int mpiByteCount(std::size_t bytes) {
+    if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        throw std::length_error("an MPI message of " + std::to_string(bytes) + " bytes exceeds 2 GiB");
+    return static_cast<int>(bytes);
+}
+
+Communicator::Communicator(MPI_Comm ranks) : ranks_(ranks) {
+    MPI_Comm_rank(ranks_, &rank_);
+    MPI_Comm_size(ranks_, &size_);
+}
+
+double Communicator::maxOverRanks(double value) const {
+    double result = value;
+    MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, ranks_);
+    return result;
+}
+
+std::int64_t Communicator::sumOverRanks(std::int64_t value) const {
+    std::int64_t result = value;
+    MPI_Allreduce(&value, &result, 1, MPI_INT64_T, MPI_SUM, ranks_);
+    return result;
+}
+
+void Communicator::stopIfAnyFailed(const std::optional<std::string>& error) const {
+    const int mine = error ? rank_ : size_;
+    int firstFailing = size_;
+    MPI_Allreduce(&mine, &firstFailing, 1, MPI_INT, MPI_MIN, ranks_);
+    if (firstFailing == size_) return;
+    std::string message = rank_ == firstFailing ? *error : std::string();
+    int length = mpiByteCount(message.size());
+    MPI_Bcast(&length, 1, MPI_INT, firstFailing, ranks_);
+    message.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(message.data(), length, MPI_CHAR, firstFailing, ranks_);
+    throw FatalError("rank " + std::to_string(firstFailing) + " of " + std::to_string(size_) + ": " + message);
+}
+
+std::vector<std::byte> Communicator::exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const {
+    const auto ranks = static_cast<std::size_t>(size_);
+    if (toRank.size() != ranks) throw std::logic_error("exchangeWithAll needs one buffer per rank");
+    std::vector<int> sendCounts(ranks), receiveCounts(ranks), sendOffsets(ranks), receiveOffsets(ranks);
+    std::vector<std::byte> sent;
+    for (std::size_t r = 0; r < ranks; ++r) {
+        sendCounts[r] = mpiByteCount(toRank[r].size());
+        sendOffsets[r] = mpiByteCount(sent.size());
+        sent.insert(sent.end(), toRank[r].begin(), toRank[r].end());
+    }
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT, ranks_);
+    std::size_t total = 0;
+    fromRank.assign(ranks, 0);
+    for (std::size_t r = 0; r < ranks; ++r) {
+        receiveOffsets[r] = mpiByteCount(total);
+        fromRank[r] = static_cast<std::size_t>(receiveCounts[r]);
+        total += fromRank[r];
+    }
+    std::vector<std::byte> received(total);
+    MPI_Alltoallv(sent.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, received.data(), receiveCounts.data(), receiveOffsets.data(),
+                  MPI_BYTE, ranks_);
+    return received;
+}
+
+}  // namespace sph::parallel

@@ -1,0 +1,45 @@
+// The ranks of one run, and the decisions they take together. Every member is collective: all
+// ranks call it, in the same order, or the run hangs. A rank never takes a path alone; it
+// reports what it found (a failure, a wish to stop) and the ranks act on the agreed answer.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sph::parallel {
+
+// A message's length as MPI counts it (int); a message past 2 GiB would need a derived type,
+// which no exchange here comes near (a 3D particle with every field is under 300 bytes).
+int mpiByteCount(std::size_t bytes);
+
+class Communicator {
+public:
+    explicit Communicator(MPI_Comm ranks = MPI_COMM_WORLD);
+
+    MPI_Comm handle() const { return ranks_; }
+    int rank() const { return rank_; }
+    int size() const { return size_; }
+
+    double maxOverRanks(double value) const;
+    std::int64_t sumOverRanks(std::int64_t value) const;
+
+    // Throws FatalError on every rank when any rank passes an error: the message is that of the
+    // lowest failing rank, prefixed with its number. Returns on every rank otherwise.
+    void stopIfAnyFailed(const std::optional<std::string>& error) const;
+
+    // Every rank sends toRank[r] to rank r and receives from each rank what it sent here:
+    // the bytes from rank 0 first, then rank 1's, ...; fromRank[r] says how many came from r.
+    std::vector<std::byte> exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const;
+
+private:
+    MPI_Comm ranks_;
+    int rank_ = 0;
+    int size_ = 1;
+};
+
+}  // namespace sph::parallel

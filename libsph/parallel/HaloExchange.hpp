@@ -1,0 +1,47 @@
+// Halo copies: each rank receives, after its owned particles, copies of the particles other ranks
+// own within `width` of its box (across periodic seams too, unshifted: the pair arithmetic takes
+// the nearest image as in a serial run). The lists are built once per migration; between two,
+// `refresh` sends the owners' new values of the arrays a stage needs. Messages go to the ranks
+// whose boxes lie within `width` only, never to all.
+#pragma once
+
+#include "core/ParticleSet.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/DomainBoxes.hpp"
+#include "parallel/FieldBytes.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sph::parallel {
+
+template <int D>
+class HaloExchange {
+public:
+    // Collective. Drops the set's halos, lists what goes where, and fills the new halos with
+    // every array (global ids, positions, every field).
+    HaloExchange(const Communicator& ranks, ParticleSet<D>& set, const DomainBoxes<D>& boxes, double width);
+
+    // Collective. The owners' current values of `fields` to their copies, e.g.
+    // halos.refresh(fluid, fields::velocity, fields::density).
+    template <class... Keys>
+    void refresh(ParticleSet<D>& set, Keys... keys) const {
+        exchange({bytesOf(set[keys])...});
+    }
+    void refreshPositions(ParticleSet<D>& set) const { exchange({bytesOf(set.position)}); }
+
+    // The ranks this one exchanges with, ascending.
+    const std::vector<int>& neighbours() const { return neighbours_; }
+    std::size_t sentCount() const;
+
+private:
+    void exchange(const std::vector<FieldBytes>& arrays) const;
+
+    Communicator ranks_;
+    std::size_t owned_;
+    std::vector<int> neighbours_;
+    std::vector<std::vector<std::uint32_t>> sendLists_;  // per neighbour: owned particles
+    std::vector<std::size_t> receiveCounts_;             // per neighbour
+};
+
+}  // namespace sph::parallel
