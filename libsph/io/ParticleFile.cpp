@@ -19,6 +19,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <span>
 #include <string_view>
 
 namespace sph {
@@ -26,7 +27,7 @@ namespace sph {
 namespace {
 
 template <class Array>
-vtkSmartPointer<Array> fieldArray(const std::string& name, const std::vector<double>& values) {
+vtkSmartPointer<Array> fieldArray(const std::string& name, std::span<const double> values) {
     auto array = vtkSmartPointer<Array>::New();
     array->SetName(name.c_str());
     for (double v : values) array->InsertNextValue(v);
@@ -95,7 +96,7 @@ StateHeader headerOf(vtkUnstructuredGrid* grid, const std::filesystem::path& fil
 
 template <int D>
 void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header) {
-    const std::size_t n = particles.size();
+    const std::size_t n = particles.ownedCount();  // halo copies belong to other ranks' files
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();
@@ -115,11 +116,11 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
 
     auto ids = vtkSmartPointer<vtkTypeInt64Array>::New();
     ids->SetName("id");
-    for (std::int64_t id : particles.globalId) ids->InsertNextValue(id);
+    for (std::size_t i = 0; i < n; ++i) ids->InsertNextValue(particles.globalId[i]);
     grid->GetPointData()->AddArray(ids);
     for (const auto& [name, field] : particles.scalars()) {
         if (!field.written) continue;
-        grid->GetPointData()->AddArray(fieldArray<vtkDoubleArray>(name, field.values));
+        grid->GetPointData()->AddArray(fieldArray<vtkDoubleArray>(name, std::span(field.values).first(n)));
     }
     for (const auto& [name, field] : particles.vectors()) {
         if (!field.written) continue;
@@ -138,15 +139,16 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
         if (!field.written) continue;
         auto array = vtkSmartPointer<vtkIntArray>::New();
         array->SetName(name.c_str());
-        for (int v : field.values) array->InsertNextValue(v);
+        for (std::size_t i = 0; i < n; ++i) array->InsertNextValue(field.values[i]);
         grid->GetPointData()->AddArray(array);
     }
 
     vtkFieldData* data = grid->GetFieldData();
-    data->AddArray(fieldArray<vtkDoubleArray>("TimeValue", {header.time}));
-    data->AddArray(fieldArray<vtkDoubleArray>("step", {static_cast<double>(header.step)}));
-    data->AddArray(fieldArray<vtkDoubleArray>("dimension", {static_cast<double>(D)}));
-    data->AddArray(fieldArray<vtkDoubleArray>("spacing", {header.spacing}));
+    const auto one = [](double value) { return std::vector<double>{value}; };
+    data->AddArray(fieldArray<vtkDoubleArray>("TimeValue", one(header.time)));
+    data->AddArray(fieldArray<vtkDoubleArray>("step", one(static_cast<double>(header.step))));
+    data->AddArray(fieldArray<vtkDoubleArray>("dimension", one(static_cast<double>(D))));
+    data->AddArray(fieldArray<vtkDoubleArray>("spacing", one(header.spacing)));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMin", header.domainMin));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMax", header.domainMax));
     if (!header.periodic.empty()) data->AddArray(fieldArray<vtkDoubleArray>("periodic", header.periodic));

@@ -31,6 +31,7 @@ struct StateHeader {
     std::map<std::string, std::vector<double>> restart;
 };
 
+// Writes the owned particles (halo copies are in other ranks' files).
 template <int D>
 void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header);
 

@@ -1,0 +1,90 @@
+#include "parallel/ParticlePieces.hpp"
+
+#include "core/FatalError.hpp"
+#include "io/PvtuFile.hpp"
+#include "parallel/FieldBytes.hpp"
+
+#include <fmt/format.h>
+
+#include <numeric>
+#include <optional>
+
+namespace sph::parallel {
+
+namespace {
+
+// Runs `body` on this rank and stops every rank with the first failing rank's message.
+template <class Body>
+void together(const Communicator& ranks, Body&& body) {
+    std::optional<std::string> error;
+    try {
+        body();
+    } catch (const FatalError& e) {
+        error = e.what();
+    }
+    ranks.stopIfAnyFailed(error);
+}
+
+// Appends `piece` to `set`: the same fields, or FatalError naming the piece.
+template <int D>
+void append(ParticleSet<D>& set, ParticleSet<D>& piece, const std::filesystem::path& file) {
+    if (writtenPointArrays(set) != writtenPointArrays(piece))
+        throw FatalError("error: particle piece '" + file.string() + "' holds other fields than the pieces before it");
+    const std::size_t first = set.size();
+    std::vector<std::uint32_t> all(piece.size());
+    std::iota(all.begin(), all.end(), 0u);
+    std::vector<std::byte> message;
+    pack(everyArray(piece), all, message);
+    set.resize(first + piece.size());
+    unpack(everyArray(set), first, message);
+}
+
+}  // namespace
+
+template <int D>
+void writeParticlePieces(const Communicator& ranks, const std::filesystem::path& directory, const std::string& name, const ParticleSet<D>& particles,
+                         const StateHeader& header) {
+    together(ranks, [&] { writeParticleFile(directory / fmt::format("{}_{}.vtu", name, ranks.rank()), particles, header); });
+    together(ranks, [&] {
+        if (ranks.rank() != 0) return;
+        std::vector<std::string> pieces;
+        for (int r = 0; r < ranks.size(); ++r) pieces.push_back(fmt::format("{}_{}.vtu", name, r));
+        writePvtu(directory / (name + ".pvtu"), writtenPointArrays(particles), pieces);
+    });
+}
+
+template <int D>
+ParticleSet<D> readParticlePieces(const Communicator& ranks, const std::filesystem::path& index, const std::string& setName, StateHeader& header) {
+    ParticleSet<D> set(setName);
+    together(ranks, [&] {
+        const std::vector<std::filesystem::path> pieces = readPvtuPieces(index);
+        // A rank without a piece of its own takes the fields and the header from the first one.
+        const bool hasPiece = static_cast<std::size_t>(ranks.rank()) < pieces.size();
+        set = readParticleFile<D>(pieces[hasPiece ? static_cast<std::size_t>(ranks.rank()) : 0], setName, header);
+        if (!hasPiece) set.resize(0);
+        for (std::size_t p = static_cast<std::size_t>(ranks.rank()) + static_cast<std::size_t>(ranks.size()); p < pieces.size();
+             p += static_cast<std::size_t>(ranks.size())) {
+            StateHeader pieceHeader;
+            ParticleSet<D> piece = readParticleFile<D>(pieces[p], setName, pieceHeader);
+            if (pieceHeader.time != header.time || pieceHeader.step != header.step)
+                throw FatalError(fmt::format("error: particle piece '{}' is of t = {:g} (step {}), the one before it of t = {:g} (step {})",
+                                             pieces[p].string(), pieceHeader.time, pieceHeader.step, header.time, header.step));
+            append(set, piece, pieces[p]);
+        }
+    });
+    // Every rank has a header now: the same on all, or pieces of different writes were mixed.
+    const auto step = static_cast<double>(header.step);
+    if (ranks.maxOverRanks(header.time) != -ranks.maxOverRanks(-header.time) || ranks.maxOverRanks(step) != -ranks.maxOverRanks(-step))
+        throw FatalError("error: the pieces of '" + index.string() + "' are of different times or steps");
+    return set;
+}
+
+#define SPHKIT_INSTANTIATE(D)                                                                                                       \
+    template void writeParticlePieces(const Communicator&, const std::filesystem::path&, const std::string&, const ParticleSet<D>&, \
+                                      const StateHeader&);                                                                          \
+    template ParticleSet<D> readParticlePieces(const Communicator&, const std::filesystem::path&, const std::string&, StateHeader&);
+SPHKIT_INSTANTIATE(1)
+SPHKIT_INSTANTIATE(2)
+SPHKIT_INSTANTIATE(3)
+
+}  // namespace sph::parallel
