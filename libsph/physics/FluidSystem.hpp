@@ -75,6 +75,11 @@ public:
     void correctBodies(double dt) override;
     std::vector<std::string> freeBodyPatches() const override;
 
+    // Takes other particles with the fields of these (a rank's share of a decomposed case, owned
+    // particles and halo copies together, walls in the order of the set they replace): each
+    // patch's range follows the walls' patch field, and the wall lists are rebuilt.
+    void adoptParticles(ParticleSet<D> fluidSet, ParticleSet<D> wallSet);
+
     // Brings fluid particles that crossed a periodic side back into the domain; call between
     // steps. Returns whether any particle moved.
     bool wrapPeriodic();
@@ -127,6 +132,7 @@ private:
     void computeForces(const Vec<D>& gravity, RateTerms terms);
     void addWallForces(double t);
     void moveWalls(double t);
+    void indexWalls();
 
     FluidModels<D> models_;
     Vec<D> domainMin_, domainMax_;

@@ -68,15 +68,8 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         for (std::size_t w = 0; w < walls.size(); ++w) area[w] = std::pow(spacing[w], D - 1);
     }
     if (viscous()) walls.add(fields::viscousVelocity, Vec<D>::Zero(), false);
-    wallParticleEnd_ = patches.empty() ? walls.size() : 0;
+    indexWalls();
     for (Patch<D>& patch : patches) {
-        if (patch.model->actsThroughWallParticles()) {
-            if (wallParticleEnd_ != patch.begin) throw std::logic_error("wall-particle patches must precede wall-force patches");
-            wallParticleEnd_ = patch.end;
-        } else {
-            patch.cells.emplace(domainMin, domainMax, supportRadius_, periodic);
-            patch.cells->build(walls.position, patch.begin, patch.end);
-        }
         wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
         keepsUncorrectedAcceleration_ = keepsUncorrectedAcceleration_ || patch.model->needsUncorrectedAcceleration();
         patch.model->addFields(boundaryView(0.0));
@@ -95,6 +88,41 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         walls.add(fields::acceleration, Vec<D>::Zero(), false);
     }
     wallCells_.markCellsNearPoints();  // the fluid-wall pass skips the fluid cells with no wall particle near
+    wallCells_.build(walls.position, 0, wallParticleEnd_);
+}
+
+// Where the wall-particle patches end, and the wall-force patches' own lists.
+template <int D>
+void FluidSystem<D>::indexWalls() {
+    wallParticleEnd_ = patches.empty() ? walls.size() : 0;
+    for (Patch<D>& patch : patches) {
+        if (patch.model->actsThroughWallParticles()) {
+            if (wallParticleEnd_ != patch.begin) throw std::logic_error("wall-particle patches must precede wall-force patches");
+            wallParticleEnd_ = patch.end;
+        } else {
+            if (!patch.cells) patch.cells.emplace(domainMin_, domainMax_, supportRadius_, periodic_);
+            patch.cells->build(walls.position, patch.begin, patch.end);
+        }
+    }
+}
+
+template <int D>
+void FluidSystem<D>::adoptParticles(ParticleSet<D> fluidSet, ParticleSet<D> wallSet) {
+    // A patch's walls carry its index in the case's patch list; the patches run in wall order.
+    std::vector<int> patchIndex(patches.size(), -1);
+    for (std::size_t p = 0; p < patches.size(); ++p)
+        if (patches[p].end > patches[p].begin) patchIndex[p] = walls[fields::patch][patches[p].begin];
+    fluid = std::move(fluidSet);
+    walls = std::move(wallSet);
+    const auto& patchOfWall = walls[fields::patch];
+    std::size_t begin = 0;
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+        patches[p].begin = begin;
+        patches[p].end = begin + static_cast<std::size_t>(std::count(patchOfWall.begin(), patchOfWall.end(), patchIndex[p]));
+        begin = patches[p].end;
+    }
+    if (!patches.empty() && begin != walls.size()) throw std::logic_error("adoptParticles: walls of no patch, or of a patch that had none");
+    indexWalls();
     wallCells_.build(walls.position, 0, wallParticleEnd_);
 }
 

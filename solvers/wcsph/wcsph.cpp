@@ -7,6 +7,12 @@
 
 #include <fmt/format.h>
 
+#ifdef SPHKIT_WITH_MPI
+#include "parallel/ParallelRates.hpp"
+
+#include <mpi.h>
+#endif
+
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -33,6 +39,9 @@ Options:
                   earlier run wrote (without it the solver refuses to overwrite them)
   -threads <N>    run on N threads (default: one per 3,000 particles, per 800 in 3D, at most
                   OMP_NUM_THREADS or the cores)
+  -parallel       under mpirun (builds with MPI): share the case among the ranks; so far with
+                  -rates only, for continuity density and fixed dynamicBoundary walls
+                  (doc/userGuide.md)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
@@ -57,6 +66,34 @@ std::optional<int> parseThreadCount(const std::string& text) {
     return threads;
 }
 
+#ifdef SPHKIT_WITH_MPI
+// Errors of the parallel run are collective (every rank stops with the same message): rank 0
+// prints them, as it prints the log.
+int runInParallel(const std::string& caseDirectory, sph::RunMode mode, std::optional<int> threads) {
+    MPI_Init(nullptr, nullptr);
+    int status = 0;
+    {
+        const sph::parallel::Communicator ranks;
+        if (ranks.rank() != 0 && !std::freopen("/dev/null", "w", stdout)) status = 3;
+        bool failedQuietly = false;
+        if (status == 0)
+            status = sph::exitCodeOf([&] {
+                try {
+                    if (mode != sph::RunMode::RatesOnly)
+                        throw sph::FatalError("error: wcsph -parallel runs with -rates only so far (issue 23); run the case without -parallel");
+                    sph::parallel::writeRatesInParallel(ranks, caseDirectory, threads);
+                } catch (const sph::FatalError&) {
+                    if (ranks.rank() == 0) throw;
+                    failedQuietly = true;
+                }
+            });
+        if (failedQuietly) status = 1;
+    }
+    MPI_Finalize();
+    return status;
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +101,7 @@ int main(int argc, char** argv) {
     std::string caseDirectory = ".";
     sph::RunMode mode = sph::RunMode::TimeLoop;
     bool overwrite = false;
+    bool parallel = false;
     std::optional<int> threads;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -89,6 +127,10 @@ int main(int argc, char** argv) {
             overwrite = true;
             continue;
         }
+        if (arg == "-parallel") {
+            parallel = true;
+            continue;
+        }
         if (arg == "-threads" && i + 1 < argc) {
             threads = parseThreadCount(argv[++i]);
             if (!threads) {
@@ -103,6 +145,15 @@ int main(int argc, char** argv) {
         }
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
+    }
+    if (parallel) {
+#ifdef SPHKIT_WITH_MPI
+        return runInParallel(caseDirectory, mode, threads);
+#else
+        fmt::print(stderr,
+                   "error: -parallel needs a build with MPI (CMake SPHKIT_MPI; packages openmpi-bin libopenmpi-dev libtrilinos-zoltan-dev)\n");
+        return 2;
+#endif
     }
     return sph::exitCodeOf([&] { sph::runCase(caseDirectory, mode, overwrite, threads); });
 }
