@@ -36,12 +36,25 @@ std::size_t unpack(const std::vector<FieldBytes>& arrays, std::size_t first, std
         throw std::logic_error("a particle message of " + std::to_string(message.size()) + " bytes is no whole number of " + std::to_string(record) +
                                "-byte particles: the ranks' sets hold different fields");
     const std::size_t count = message.size() / record;
+    if (count == 0) return 0;  // an empty message may have no storage at all
     const std::byte* from = message.data();
     for (const FieldBytes& array : arrays) {
         std::memcpy(array.data + first * array.bytesPerParticle, from, count * array.bytesPerParticle);
         from += count * array.bytesPerParticle;
     }
     return count;
+}
+
+void unpack(const std::vector<FieldBytes>& arrays, std::span<const std::uint32_t> places, std::span<const std::byte> message) {
+    if (message.size() != places.size() * bytesPerParticle(arrays))
+        throw std::logic_error("a particle message of " + std::to_string(message.size()) + " bytes does not fill " + std::to_string(places.size()) +
+                               " places: the ranks' sets hold different fields");
+    const std::byte* from = message.data();
+    for (const FieldBytes& array : arrays)
+        for (const std::uint32_t place : places) {
+            std::memcpy(array.data + place * array.bytesPerParticle, from, array.bytesPerParticle);
+            from += array.bytesPerParticle;
+        }
 }
 
 template std::vector<FieldBytes> everyArray(ParticleSet<1>&);

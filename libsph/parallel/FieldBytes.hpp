@@ -35,4 +35,7 @@ void pack(const std::vector<FieldBytes>& arrays, std::span<const std::uint32_t> 
 // Writes a message of `pack` to the particles first, first + 1, ...; returns how many it held.
 std::size_t unpack(const std::vector<FieldBytes>& arrays, std::size_t first, std::span<const std::byte> message);
 
+// The same to the particles `places` (as many as the message holds).
+void unpack(const std::vector<FieldBytes>& arrays, std::span<const std::uint32_t> places, std::span<const std::byte> message);
+
 }  // namespace sph::parallel

@@ -30,6 +30,10 @@ public:
     }
     void refreshPositions(ParticleSet<D>& set) const { exchange({bytesOf(set.position)}); }
 
+    // After set.keep(order) on the set the exchange filled (owned particles and copies mixed, in
+    // another order): the lists follow the particles to their new places.
+    void reorder(const std::vector<std::uint32_t>& order);
+
     // The ranks this one exchanges with, ascending.
     const std::vector<int>& neighbours() const { return neighbours_; }
     std::size_t sentCount() const;
@@ -38,10 +42,9 @@ private:
     void exchange(const std::vector<FieldBytes>& arrays) const;
 
     Communicator ranks_;
-    std::size_t owned_;
     std::vector<int> neighbours_;
-    std::vector<std::vector<std::uint32_t>> sendLists_;  // per neighbour: owned particles
-    std::vector<std::size_t> receiveCounts_;             // per neighbour
+    std::vector<std::vector<std::uint32_t>> sendLists_;      // per neighbour: owned particles
+    std::vector<std::vector<std::uint32_t>> receivePlaces_;  // per neighbour: where its copies go
 };
 
 }  // namespace sph::parallel

@@ -23,20 +23,26 @@ constexpr IntegerField serialOrder{"serialOrder"};
 
 template <int D>
 std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
-    if (!system.continuity()) return "summation density (density { type summation; })";
     if (std::holds_alternative<Antuono2010>(system.models().diffusion)) return "delta-SPH's density diffusion (antuono)";
     for (const Patch<D>& patch : system.patches) {
         if (patch.motion) return "a moving patch ('" + patch.name + "')";
-        if (patch.model->describe() != "dynamicBoundary")
-            return "the boundary model of patch '" + patch.name + "' (" + patch.model->describe() + "; so far only dynamicBoundary)";
+        const std::string model = patch.model->describe();
+        if (model != "dynamicBoundary" && !model.starts_with("dummyParticles"))
+            return "the boundary model of patch '" + patch.name + "' (" + model + "; so far dynamicBoundary and dummyParticles)";
     }
     return std::nullopt;
 }
 
-// This rank's particles of `set` and the copies of others' within `width` of its box, all in
-// the serial order.
+// This rank's particles of a set and the copies of others' within the halo width of its box,
+// all in the serial order, with the exchange that refreshes the copies.
 template <int D>
-ParticleSet<D> shareOf(const Communicator& ranks, const ParticleSet<D>& set, const DomainBoxes<D>& boxes, double width) {
+struct Share {
+    ParticleSet<D> particles;
+    HaloExchange<D> halos;
+};
+
+template <int D>
+Share<D> shareOf(const Communicator& ranks, const ParticleSet<D>& set, const DomainBoxes<D>& boxes, double width) {
     ParticleSet<D> share = set;
     auto& order = share.add(serialOrder, 0, false);
     std::iota(order.begin(), order.end(), 0);
@@ -44,13 +50,14 @@ ParticleSet<D> shareOf(const Communicator& ranks, const ParticleSet<D>& set, con
     for (std::size_t i = 0; i < share.size(); ++i)
         if (boxes.ownerOf(share.position[i]) == ranks.rank()) owned.push_back(static_cast<std::uint32_t>(i));
     share.keep(owned);
-    const HaloExchange<D> halos(ranks, share, boxes, width);
+    HaloExchange<D> halos(ranks, share, boxes, width);
     std::vector<std::uint32_t> serial(share.size());
     std::iota(serial.begin(), serial.end(), 0u);
     const auto& place = share[serialOrder];
     std::sort(serial.begin(), serial.end(), [&](std::uint32_t a, std::uint32_t b) { return place[a] < place[b]; });
     share.keep(serial);
-    return share;
+    halos.reorder(serial);
+    return {std::move(share), std::move(halos)};
 }
 
 // The particles of `set` this rank owns.
@@ -90,9 +97,16 @@ void ratesOfDimension(const Communicator& ranks, const std::filesystem::path& ca
 
     // One evaluation, no particle moves: the kernel support is the halo width.
     const double width = system.supportRadius();
-    ParticleSet<D> fluid = shareOf(ranks, system.fluid, boxes, width);
-    ParticleSet<D> walls = shareOf(ranks, system.walls, boxes, width);
-    system.adoptParticles(std::move(fluid), std::move(walls));
+    Share<D> fluid = shareOf(ranks, system.fluid, boxes, width);
+    Share<D> walls = shareOf(ranks, system.walls, boxes, width);
+    system.adoptParticles(std::move(fluid.particles), std::move(walls.particles));
+    // A copy's summed density and a wall copy's extrapolated state lack the particles beyond the
+    // halo: the owners' values replace them.
+    system.afterSummationDensity = [&] { fluid.halos.refresh(system.fluid, fields::density); };
+    system.afterWallUpdate = [&] {
+        walls.halos.refresh(system.walls, fields::pressure, fields::density);
+        if (system.walls.has(fields::viscousVelocity)) walls.halos.refresh(system.walls, fields::viscousVelocity);
+    };
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     system.evaluateRates(startTime);
 

@@ -5,8 +5,9 @@
 // With one thread per rank the rates equal the serial -rates bit for bit: a rank's particles
 // keep the serial order (that of the state files), and the cell lists have the serial grid, so
 // an owned particle meets its neighbours, and adds their terms, in the serial order.
-// So far (issue 23): continuity density, fixed dynamicBoundary walls, periodic directions, any
-// kernel and viscosity, the density diffusions without a density gradient. Anything else stops
+// So far (issue 23): fixed dynamicBoundary and dummyParticles walls, continuity or summation
+// density, periodic directions, any kernel and viscosity, the density diffusions without a
+// density gradient. Anything else stops
 // before the evaluation, naming what does not run on several ranks yet. Every rank reads the
 // whole case (pieces per rank come with the time loop).
 #pragma once

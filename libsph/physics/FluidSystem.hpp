@@ -36,6 +36,7 @@
 #include "timeIntegrators/IntegrableSystem.hpp"
 #include "viscosity/Viscosity.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -120,6 +121,11 @@ public:
     FluidSystemView<D> view() const;
 
     std::vector<Patch<D>> patches;
+
+    // Where a decomposed run's halo copies take their owners' values within an evaluation: after
+    // summation density (the fluid's density) and after the wall-particle models' update (the
+    // walls' state). Empty in a serial run.
+    std::function<void()> afterSummationDensity, afterWallUpdate;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }

@@ -195,7 +195,10 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
     }
     {
         auto timer = timers.time(Stage::Density);
-        if (!continuity()) computeSummationDensity();
+        if (!continuity()) {
+            computeSummationDensity();
+            if (afterSummationDensity) afterSummationDensity();
+        }
         computeFluidPressure();
     }
     {
@@ -203,6 +206,7 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
         const BoundaryView<D> view = boundaryView(t);
         for (Patch<D>& patch : patches)
             if (!patch.cells) patch.model->updateWalls(view, patch.begin, patch.end);
+        if (afterWallUpdate) afterWallUpdate();
     }
     {
         auto timer = timers.time(Stage::Forces);

@@ -40,7 +40,7 @@ Options:
   -threads <N>    run on N threads (default: one per 3,000 particles, per 800 in 3D, at most
                   OMP_NUM_THREADS or the cores)
   -parallel       under mpirun (builds with MPI): share the case among the ranks; so far with
-                  -rates only, for continuity density and fixed dynamicBoundary walls
+                  -rates only, for fixed dynamicBoundary and dummyParticles walls
                   (doc/userGuide.md)
   -help           print this message
 

@@ -2,8 +2,10 @@
 """wcsph -parallel -rates on 1-4 ranks (mpirun, oversubscribed, one thread each) against the
 serial -rates of the same build: every particle's every array (acceleration, density rate,
 pressure, ...) equal bit for bit, on a periodic case without walls (taylorGreen2D), the 2D dam
-break on dynamic-boundary walls, and the 3D dam break (SPHERIC Test 2, dynamic boundary, pairs
-in vector lanes). Each from a state the serial solver wrote after some steps: particles off
+break as shipped (dummy particles, no-slip: the walls' extrapolated state crosses ranks), the 2D
+dam break on dynamic-boundary walls, the periodic channel with summation density (the summed
+density crosses ranks) and the 3D dam break (SPHERIC Test 2, dynamic boundary, pairs in vector
+lanes). Each from a state the serial solver wrote after some steps: particles off
 the lattice (on it, a halo too narrow by a fifth of the support can go unseen: the particles it
 leaves out lie at exactly the support) and stored in the order the cell sorts left. A model that does not run on several ranks yet stops every rank with one
 message. Run by CTest with SPHKIT_BIN set to the build's binaries and MPIEXEC to mpirun."""
@@ -44,7 +46,7 @@ class ParallelRates(unittest.TestCase):
         self.work = tempfile.TemporaryDirectory()
         self.addCleanup(self.work.cleanup)
 
-    def case(self, name, end_time, boundary=None):
+    def case(self, name, end_time, boundary=None, density=None):
         case = os.path.join(self.work.name, name)
         shutil.copytree(os.path.join(ROOT, "cases", name), case,
                         ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
@@ -54,6 +56,12 @@ class ParallelRates(unittest.TestCase):
                 text = f.read()
             with open(path, "w") as f:
                 f.write(re.sub(r"type\s+\w+;(\s*noSlip\s+\w+;)?", f"type {boundary};", text))
+        if density:
+            path = os.path.join(case, "system", "sphSchemes")
+            with open(path) as f:
+                text = f.read()
+            with open(path, "w") as f:
+                f.write(re.sub(r"density\s+\{\s*type\s+\w+;\s*\}", f"density {{ type {density}; }}", text))
         subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], capture_output=True, env=ENV, check=True)
         path = os.path.join(case, "system", "controlDict")
         with open(path) as f:
@@ -92,6 +100,14 @@ class ParallelRates(unittest.TestCase):
         self.start = "0.02"
         self.assert_equal_to_serial(self.case("taylorGreen2D", 0.02), (1, 2, 3, 4))
 
+    def test_the_2d_dam_break_as_shipped_on_dummy_particles(self):
+        self.start = "0.02"
+        self.assert_equal_to_serial(self.case("damBreak2D", 0.02), (2, 3, 4))
+
+    def test_the_periodic_channel_with_summation_density(self):
+        self.start = "0.01"
+        self.assert_equal_to_serial(self.case("poiseuille2D", 0.01, density="summation"), (2, 3))
+
     def test_the_2d_dam_break_on_dynamic_boundary_walls(self):
         self.start = "0.02"
         self.assert_equal_to_serial(self.case("damBreak2D", 0.02, "dynamicBoundary"), (2, 3, 4))
@@ -101,14 +117,14 @@ class ParallelRates(unittest.TestCase):
         self.assert_equal_to_serial(self.case("damBreak3D", 0.005), (2, 4))
 
     def test_a_model_not_yet_parallel_stops_every_rank_with_one_message(self):
-        case = os.path.join(self.work.name, "hydrostaticTank2D")  # dummyParticles
-        shutil.copytree(os.path.join(ROOT, "cases", "hydrostaticTank2D"), case,
+        case = os.path.join(self.work.name, "rectangularTank2D")  # the deficiency correction
+        shutil.copytree(os.path.join(ROOT, "cases", "rectangularTank2D"), case,
                         ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
         subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], capture_output=True, env=ENV, check=True)
         run = subprocess.run([MPIEXEC, "-np", "2", "--oversubscribe", os.path.join(BIN, "wcsph"), "-parallel", "-rates", "-case", case],
                              capture_output=True, text=True, env=ENV, timeout=120)
         self.assertNotEqual(run.returncode, 0)
-        message = "error: wcsph -parallel does not run the boundary model of patch 'tank' (dummyParticles"
+        message = "error: wcsph -parallel does not run the boundary model of patch 'tank' (deficiencyCorrection"
         self.assertEqual((run.stdout + run.stderr).count(message), 1, run.stdout + run.stderr)
 
 
