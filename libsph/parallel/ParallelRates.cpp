@@ -33,33 +33,6 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
     return std::nullopt;
 }
 
-// This rank's particles of a set and the copies of others' within the halo width of its box,
-// all in the serial order, with the exchange that refreshes the copies.
-template <int D>
-struct Share {
-    ParticleSet<D> particles;
-    HaloExchange<D> halos;
-};
-
-template <int D>
-Share<D> shareOf(const Communicator& ranks, const ParticleSet<D>& set, const DomainBoxes<D>& boxes, double width) {
-    ParticleSet<D> share = set;
-    auto& order = share.add(serialOrder, 0, false);
-    std::iota(order.begin(), order.end(), 0);
-    std::vector<std::uint32_t> owned;
-    for (std::size_t i = 0; i < share.size(); ++i)
-        if (boxes.ownerOf(share.position[i]) == ranks.rank()) owned.push_back(static_cast<std::uint32_t>(i));
-    share.keep(owned);
-    HaloExchange<D> halos(ranks, share, boxes, width);
-    std::vector<std::uint32_t> serial(share.size());
-    std::iota(serial.begin(), serial.end(), 0u);
-    const auto& place = share[serialOrder];
-    std::sort(serial.begin(), serial.end(), [&](std::uint32_t a, std::uint32_t b) { return place[a] < place[b]; });
-    share.keep(serial);
-    halos.reorder(serial);
-    return {std::move(share), std::move(halos)};
-}
-
 // The particles of `set` this rank owns.
 template <int D>
 ParticleSet<D> ownedPart(const Communicator& ranks, const ParticleSet<D>& set, const DomainBoxes<D>& boxes) {
@@ -69,6 +42,27 @@ ParticleSet<D> ownedPart(const Communicator& ranks, const ParticleSet<D>& set, c
         if (boxes.ownerOf(owned.position[i]) == ranks.rank()) mine.push_back(static_cast<std::uint32_t>(i));
     owned.keep(mine);
     return owned;
+}
+
+// This rank's particles of a set (which holds serialOrder) and the copies of others' within the
+// halo width of its box, all in the serial order, with the exchange that refreshes the copies.
+template <int D>
+struct Share {
+    ParticleSet<D> particles;
+    HaloExchange<D> halos;
+};
+
+template <int D>
+Share<D> shareOf(const Communicator& ranks, const ParticleSet<D>& set, const DomainBoxes<D>& boxes, double width) {
+    ParticleSet<D> share = ownedPart(ranks, set, boxes);
+    HaloExchange<D> halos(ranks, share, boxes, width);
+    std::vector<std::uint32_t> serial(share.size());
+    std::iota(serial.begin(), serial.end(), 0u);
+    const auto& place = share[serialOrder];
+    std::sort(serial.begin(), serial.end(), [&](std::uint32_t a, std::uint32_t b) { return place[a] < place[b]; });
+    share.keep(serial);
+    halos.reorder(serial);
+    return {std::move(share), std::move(halos)};
 }
 
 template <int D>
@@ -97,6 +91,10 @@ void ratesOfDimension(const Communicator& ranks, const std::filesystem::path& ca
 
     // One evaluation, no particle moves: the kernel support is the halo width.
     const double width = system.supportRadius();
+    for (ParticleSet<D>* set : {&system.fluid, &system.walls}) {
+        auto& order = set->add(serialOrder, 0, false);
+        std::iota(order.begin(), order.end(), 0);
+    }
     Share<D> fluid = shareOf(ranks, system.fluid, boxes, width);
     Share<D> walls = shareOf(ranks, system.walls, boxes, width);
     system.adoptParticles(std::move(fluid.particles), std::move(walls.particles));
