@@ -2,7 +2,7 @@
 """decompositionReport on shipped cases, through mpirun: the ranks together own every particle
 the generator wrote, once; one rank has no halo; more ranks share the weight within the RCB's
 lattice granularity and exchange halos, across the periodic seam too; bad options stop with a
-message. Run by CTest with SPHKIT_BIN set to the build's binaries and MPIEXEC to mpirun."""
+message; the table of doc/performance.md is what the report prints. Run by CTest with SPHKIT_BIN set to the build's binaries and MPIEXEC to mpirun."""
 import os
 import re
 import shutil
@@ -21,7 +21,7 @@ class DecompositionReport(unittest.TestCase):
     def setUpClass(cls):
         cls.work = tempfile.TemporaryDirectory()
         cls.generated = {}
-        for name in ("damBreak2D", "taylorGreen2D"):
+        for name in ("damBreak2D", "taylorGreen2D", "damBreak3D"):
             case = os.path.join(cls.work.name, name)
             shutil.copytree(os.path.join(ROOT, "cases", name), case,
                             ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
@@ -68,6 +68,25 @@ class DecompositionReport(unittest.TestCase):
         side = round(fluid ** 0.5)
         self.assertEqual(halos % (2 * side), 0, f"{halos} halo copies are no whole number of columns of {side}")
         self.assertEqual(messages, 2)
+
+    def test_the_documented_figures_are_the_reports(self):
+        with open(os.path.join(ROOT, "doc", "performance.md")) as f:
+            doc = f.read()
+        section = doc[doc.index("## Several ranks: the decomposition measured"):]
+        section = section[:section.index("\n## ")]
+        rows = re.findall(r"^\| (damBreak[23]D)(, walls weighing 1)? \| (\d+) \| ([\d.]+) % \| (\d+) \| ([\d,]+) \| ([\d.]+) \| ([\d.]+) / ([\d.]+) MiB \|$",
+                          section, re.M)
+        self.assertEqual(len(rows), 9)
+        for name, heavy_walls, ranks, share, messages, size, imbalance, largest, mean in rows:
+            case = self.generated[name][0]
+            options = ["-wallWeight", "1"] if heavy_walls else []
+            run = subprocess.run([MPIEXEC, "-np", ranks, "--oversubscribe", os.path.join(BIN, "decompositionReport"), "-case", case, *options],
+                                 capture_output=True, text=True, env=ENV, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            total = re.search(r"halo copies \(([\d.]+) % of the owned\), (\d+) messages per refresh, (\d+) bytes", run.stdout)
+            load = re.search(r"imbalance \(largest / mean weight\): ([\d.]+); memory per rank: largest ([\d.]+) MiB, mean ([\d.]+) MiB", run.stdout)
+            printed = (f"{float(total.group(1)):.1f}", total.group(2), f"{int(total.group(3)):,}", f"{float(load.group(1)):.3f}", load.group(2), load.group(3))
+            self.assertEqual(printed, (share, messages, size, imbalance, largest, mean), f"{name}{heavy_walls} on {ranks} ranks")
 
     def test_a_bad_option_stops_with_a_message(self):
         case = self.generated["damBreak2D"][0]
