@@ -61,6 +61,13 @@ public:
         return found->values;
     }
 
+    // Drops a field (nothing where there is none).
+    template <class Value>
+    void remove(FieldKey<Value> field) {
+        if (auto it = storage<Value>().find(field.name); it != storage<Value>().end()) storage<Value>().erase(it);
+        if (field.slot >= 0) slots<Value>()[field.slot] = nullptr;
+    }
+
     template <class Value>
     bool has(FieldKey<Value> field) const {
         return find(field) != nullptr;

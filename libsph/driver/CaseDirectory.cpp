@@ -1,5 +1,7 @@
 #include "driver/CaseDirectory.hpp"
 
+#include "io/ParticleState.hpp"
+
 #include "io/TimeName.hpp"
 
 #include <algorithm>
@@ -31,7 +33,7 @@ std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& case
         char* end = nullptr;
         const double t = std::strtod(name.c_str(), &end);
         if (name.empty() || end != name.c_str() + name.size() || !std::isfinite(t)) continue;
-        if (!std::filesystem::exists(item.path() / "fluid.vtu")) {
+        if (!std::filesystem::exists(item.path() / "fluid.vtu") && !std::filesystem::exists(item.path() / "fluid.pvtu")) {
             if (withoutState) withoutState->push_back(item.path());
             continue;
         }
@@ -39,6 +41,11 @@ std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& case
     }
     std::sort(times.begin(), times.end(), [](const TimeDirectory& a, const TimeDirectory& b) { return a.time < b.time; });
     return times;
+}
+
+std::vector<std::string> stateFilesOf(const TimeDirectory& written) {
+    const std::string name = written.path.filename().string();
+    return {name + "/" + stateFile(written.path, "fluid").filename().string(), name + "/" + stateFile(written.path, "walls").filename().string()};
 }
 
 std::vector<TimeDirectory> timesAfter(const std::filesystem::path& caseDirectory, double time) {
@@ -57,10 +64,11 @@ void removeTimeDirectories(const std::vector<TimeDirectory>& times) {
 TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict) {
     std::vector<std::filesystem::path> withoutState;
     const std::vector<TimeDirectory> times = findTimeDirectories(caseDirectory, &withoutState);
-    for (const auto& skipped : withoutState) fmt::print("warning: skipping the time directory {}: it holds no fluid.vtu\n", skipped.string());
+    for (const auto& skipped : withoutState)
+        fmt::print("warning: skipping the time directory {}: it holds no fluid.vtu or fluid.pvtu\n", skipped.string());
     if (times.empty())
         throw FatalError("error: case '" + caseDirectory.string() +
-                         "' has no time directory with a fluid.vtu state; run generateParticles first to write 0/");
+                         "' has no time directory with a fluid.vtu or fluid.pvtu state; run generateParticles first to write 0/");
     const std::string startFrom = controlDict.getOrDefault<std::string>("startFrom", "latestTime");
     if (startFrom == "latestTime") return times.back();
     if (startFrom == "startTime") {
@@ -69,7 +77,7 @@ TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const 
             if (std::abs(t.time - startTime) <= 1e-9 * std::max(1.0, std::abs(startTime))) return t;
         std::string valid;
         for (const TimeDirectory& t : times) valid += " " + timeName(t.time);
-        controlDict.fail("startTime", "no time directory " + timeName(startTime) + " with a fluid.vtu; written times are:" + valid);
+        controlDict.fail("startTime", "no time directory " + timeName(startTime) + " with a fluid.vtu or fluid.pvtu; written times are:" + valid);
     }
     controlDict.fail("startFrom", "expected latestTime or startTime, found '" + startFrom + "'");
 }

@@ -4,7 +4,8 @@
 //   system/timeIntegration      integrator, Courant number, step limits
 //   constant/fluidProperties    rho0, equation of state, nu, gravity
 //   constant/boundaryProperties one boundary model per wall patch
-//   <time>/fluid.vtu, walls.vtu particle state at each written time (0/ from generateParticles)
+//   <time>/fluid.vtu, walls.vtu particle state at each written time (0/ from generateParticles);
+//                               fluid.pvtu, walls.pvtu and their pieces from wcsph -parallel
 #pragma once
 
 #include "io/Dictionary.hpp"
@@ -23,10 +24,13 @@ struct TimeDirectory {
 // The case's name: its directory's, also when given as "." or with a trailing slash.
 std::string caseName(const std::filesystem::path& caseDirectory);
 
-// Time directories holding a complete state (fluid.vtu), in increasing time; those named as a
-// time that hold no fluid.vtu are added to `withoutState` when given.
+// Time directories holding a complete state (fluid.vtu or fluid.pvtu), in increasing time; those
+// named as a time that hold neither are added to `withoutState` when given.
 std::vector<TimeDirectory> findTimeDirectories(const std::filesystem::path& caseDirectory,
                                                std::vector<std::filesystem::path>* withoutState = nullptr);
+
+// A written time's fluid and wall state files, relative to the case (as the .pvd lists them).
+std::vector<std::string> stateFilesOf(const TimeDirectory& written);
 
 // The time directories after `time`, in increasing time.
 std::vector<TimeDirectory> timesAfter(const std::filesystem::path& caseDirectory, double time);

@@ -18,8 +18,7 @@ CaseOutput<D>::CaseOutput(const std::filesystem::path& caseDirectory, const Time
       writeCsv_(writeCsv),
       pvd_(caseDirectory / (caseName(caseDirectory) + ".pvd")) {
     for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
-        if (written.time <= start.time)
-            pvd_.add(written.time, {written.path.filename().string() + "/fluid.vtu", written.path.filename().string() + "/walls.vtu"});
+        if (written.time <= start.time) pvd_.add(written.time, stateFilesOf(written));
 }
 
 template <int D>

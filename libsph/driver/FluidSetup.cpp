@@ -1,5 +1,6 @@
 #include "driver/FluidSetup.hpp"
 
+#include "io/ParticleState.hpp"
 #include "io/SelectByType.hpp"
 #include "physics/FluidProperties.hpp"
 
@@ -134,10 +135,10 @@ struct StartState {
 template <int D>
 StartState<D> readStartState(const TimeDirectory& start, StateHeader& header) {
     StartState<D> state;
-    const auto fluidFile = start.path / "fluid.vtu";
-    const auto wallFile = start.path / "walls.vtu";
-    state.fluid = readParticleFile<D>(fluidFile, "fluid", header);
-    state.walls = readParticleFile<D>(wallFile, "walls", state.wallHeader);
+    const auto fluidFile = stateFile(start.path, "fluid");
+    const auto wallFile = stateFile(start.path, "walls");
+    state.fluid = readParticleState<D>(fluidFile, "fluid", header);
+    state.walls = readParticleState<D>(wallFile, "walls", state.wallHeader);
     requireFields(state.fluid, fluidFile, {fields::density, fields::mass}, {fields::velocity}, {});
     requireFields(state.walls, wallFile, {fields::mass, fields::spacing}, {fields::normal}, {fields::patch});
     requireValidValues(state.fluid, fluidFile);
@@ -308,7 +309,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
 
     setup.patchNames = state.wallHeader.patchNames;
     std::vector<Patch<D>> patches =
-        selectPatches<D>(caseDirectory, boundaryDict, start.path / "walls.vtu", state.walls, setup.patchNames, context, support);
+        selectPatches<D>(caseDirectory, boundaryDict, stateFile(start.path, "walls"), state.walls, setup.patchNames, context, support);
     selectIntegrator<D>(timeIntegration, schemes, models.shifting.enabled(), setup);
 
     for (int d = 0; d < D; ++d)
@@ -316,7 +317,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
             throw FatalError(
                 fmt::format("error: '{}': the periodic direction {} is {:g} long, shorter than three kernel support radii ({:g}); "
                             "lengthen the domain or reduce hdx",
-                            (start.path / "fluid.vtu").string(), "xyz"[d], state.domainMax[d] - state.domainMin[d], 3.0 * support));
+                            stateFile(start.path, "fluid").string(), "xyz"[d], state.domainMax[d] - state.domainMin[d], 3.0 * support));
     setup.system = std::make_unique<FluidSystem<D>>(std::move(models), std::move(state.fluid), std::move(state.walls), std::move(patches),
                                                     state.domainMin, state.domainMax, properties.gravity, properties.gravityRampTime, state.periodic);
     setup.integrator->checkCompatible(*setup.system, timeIntegration.subDict("integrator"));

@@ -10,6 +10,7 @@
 #include "driver/RunControls.hpp"
 #include "driver/StopRequest.hpp"
 #include "driver/Threads.hpp"
+#include "io/ParticleState.hpp"
 #include "io/TimeName.hpp"
 #include "physics/FluidSystem.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
@@ -21,9 +22,6 @@
 namespace sph {
 
 namespace {
-
-// Reordering the fluid by cell costs a pass over every field; particles move little per step.
-constexpr long stepsBetweenCellSorts = 10;
 
 // A step of at most the stable size, shortened to land on `target`. Returns the time reached
 // and the step the integrator took (an adaptive one may take less than asked).
@@ -70,7 +68,7 @@ RunCost timeLoop(const std::filesystem::path& caseDirectory, const TimeDirectory
     // The exact time from the state file: a directory name holds only its first digits.
     double t = setup.header.time;
     long step = setup.header.step;
-    restoreRestartState(system, *setup.integrator, setup.integratorType, setup.header, t, (start.path / "fluid.vtu").string());
+    restoreRestartState(system, *setup.integrator, setup.integratorType, setup.header, t, stateFile(start.path, "fluid").string());
     executeFunctionObjects(t, true);
     Progress progress(t, controls.endTime, system.fluid.size());
     double nextWrite = controls.nextWriteAfter(t);
@@ -163,10 +161,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
 }  // namespace
 
-void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes, std::optional<int> threads) {
-    if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
-    const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
-    controlDict.findEntry("application");  // informational, as in OpenFOAM
+TimeDirectory prepareStartTime(const std::filesystem::path& caseDirectory, const Dictionary& controlDict, RunMode mode, bool overwriteLaterTimes) {
     if (mode == RunMode::TimeLoop) removeIncompleteOutput(caseDirectory);
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
     if (const std::vector<TimeDirectory> later = timesAfter(caseDirectory, start.time); mode == RunMode::TimeLoop && !later.empty()) {
@@ -180,7 +175,20 @@ void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool over
         }
         removeTimeDirectories(later);
     }
-    const int dimension = readParticleFileHeader(start.path / "fluid.vtu").dimension;
+    return start;
+}
+
+Dictionary readControlDict(const std::filesystem::path& caseDirectory) {
+    if (!std::filesystem::is_directory(caseDirectory)) throw FatalError("error: case directory '" + caseDirectory.string() + "' does not exist");
+    Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
+    controlDict.findEntry("application");  // informational, as in OpenFOAM
+    return controlDict;
+}
+
+void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes, std::optional<int> threads) {
+    const Dictionary controlDict = readControlDict(caseDirectory);
+    const TimeDirectory start = prepareStartTime(caseDirectory, controlDict, mode, overwriteLaterTimes);
+    const int dimension = readStateHeader(stateFile(start.path, "fluid")).dimension;
     switch (dimension) {
 #ifdef SPHKIT_HAS_1D
         case 1: return run<1>(caseDirectory, controlDict, start, mode, threads);
@@ -194,7 +202,7 @@ void runCase(const std::filesystem::path& caseDirectory, RunMode mode, bool over
         default: break;
     }
     throw FatalError(fmt::format("error: '{}' is a {}D state, but this build compiled only the dimensions in SPHKIT_DIMENSIONS",
-                                 (start.path / "fluid.vtu").string(), dimension));
+                                 stateFile(start.path, "fluid").string(), dimension));
 }
 
 }  // namespace sph

@@ -41,27 +41,41 @@ void writeAtomically(const std::filesystem::path& file, const std::function<void
     }
 }
 
-void writeDirectoryAtomically(const std::filesystem::path& directory, const std::function<void(const std::filesystem::path&)>& write) {
+std::filesystem::path temporaryDirectoryFor(const std::filesystem::path& directory) {
     const std::filesystem::path temporary = hiddenSibling(directory, "tmp");
-    const std::filesystem::path replaced = hiddenSibling(directory, "old");
     std::error_code ec;
     std::filesystem::remove_all(temporary, ec);
     std::filesystem::create_directories(temporary, ec);
     throwOnError(ec, "create the directory '" + temporary.string() + "' (directory not writable?)");
+    return temporary;
+}
+
+void moveDirectoryIntoPlace(const std::filesystem::path& temporary, const std::filesystem::path& directory) {
+    const std::filesystem::path replaced = hiddenSibling(directory, "old");
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(directory, ec);
+    if (exists) {
+        std::filesystem::rename(directory, replaced, ec);
+        throwOnError(ec, "move the old '" + directory.string() + "' aside");
+    }
+    std::filesystem::rename(temporary, directory, ec);
+    throwOnError(ec, "rename '" + temporary.string() + "' to '" + directory.string() + "'");
+    if (exists) std::filesystem::remove_all(replaced, ec);
+}
+
+void abandonDirectory(const std::filesystem::path& temporary, const std::filesystem::path& directory, const FatalError& error) {
+    std::error_code ignored;
+    std::filesystem::remove_all(temporary, ignored);
+    throw FatalError(std::string(error.what()) + "\n    while writing '" + directory.string() + "'; what was written before it is complete");
+}
+
+void writeDirectoryAtomically(const std::filesystem::path& directory, const std::function<void(const std::filesystem::path&)>& write) {
+    const std::filesystem::path temporary = temporaryDirectoryFor(directory);
     try {
         write(temporary);
-        const bool exists = std::filesystem::exists(directory, ec);
-        if (exists) {
-            std::filesystem::rename(directory, replaced, ec);
-            throwOnError(ec, "move the old '" + directory.string() + "' aside");
-        }
-        std::filesystem::rename(temporary, directory, ec);
-        throwOnError(ec, "rename '" + temporary.string() + "' to '" + directory.string() + "'");
-        if (exists) std::filesystem::remove_all(replaced, ec);
+        moveDirectoryIntoPlace(temporary, directory);
     } catch (const FatalError& error) {
-        std::error_code ignored;
-        std::filesystem::remove_all(temporary, ignored);
-        throw FatalError(std::string(error.what()) + "\n    while writing '" + directory.string() + "'; what was written before it is complete");
+        abandonDirectory(temporary, directory, error);
     }
 }
 

@@ -141,14 +141,9 @@ public:
 
     std::size_t cellCount() const { return cellStart_.size() - 1; }
 
-    // From the next build on, keeps which cells have a point of the list in their stencil, so that
-    // a query from a cell with none can be skipped (the fluid-wall pass: most fluid cells have no
-    // wall particle within reach). A build then costs 5^(D-1) row fills per cell with points more.
-    void markCellsNearPoints();
-    // Whether a point of the last build lies in the stencil of `cell` (after markCellsNearPoints).
-    bool anyPointNear(std::uint32_t cell) const { return pointNear_[cell] != 0; }
-
-private:
+    // The grid's integer coordinates and index of the cell holding x (wrapped or clamped, as a
+    // build files it), and the coordinate of the face between cells k - 1 and k along d: a rank's
+    // part of space (libsph/parallel) is a block of whole cells.
     std::array<int, D> cellCoordinates(const Vec<D>& x) const {
         std::array<int, D> c;
         for (int d = 0; d < D; ++d) {
@@ -166,6 +161,18 @@ private:
             index = index * static_cast<std::size_t>(dims_[static_cast<std::size_t>(d)]) + static_cast<std::size_t>(c[static_cast<std::size_t>(d)]);
         return index;
     }
+    double cellFace(int d, long k) const { return lower_[d] + static_cast<double>(k) / inverseCellSizes_[d]; }
+    // The face nearest to a coordinate along d, as k of cellFace.
+    long nearestCellFace(int d, double coordinate) const { return std::lround((coordinate - lower_[d]) * inverseCellSizes_[d]); }
+
+    // From the next build on, keeps which cells have a point of the list in their stencil, so that
+    // a query from a cell with none can be skipped (the fluid-wall pass: most fluid cells have no
+    // wall particle within reach). A build then costs 5^(D-1) row fills per cell with points more.
+    void markCellsNearPoints();
+    // Whether a point of the last build lies in the stencil of `cell` (after markCellsNearPoints).
+    bool anyPointNear(std::uint32_t cell) const { return pointNear_[cell] != 0; }
+
+private:
     void markCellsNear();
 
     Vec<D> lower_;

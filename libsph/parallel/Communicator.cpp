@@ -30,6 +30,22 @@ std::int64_t Communicator::sumOverRanks(std::int64_t value) const {
     return result;
 }
 
+void Communicator::maxOverRanks(std::span<double> values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), mpiByteCount(values.size()), MPI_DOUBLE, MPI_MAX, ranks_);
+}
+
+void Communicator::broadcastFromFirst(std::span<double> values) const {
+    MPI_Bcast(values.data(), mpiByteCount(values.size()), MPI_DOUBLE, 0, ranks_);
+}
+
+std::string Communicator::broadcastFromFirst(std::string text) const {
+    int length = mpiByteCount(text.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, ranks_);
+    text.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(text.data(), length, MPI_CHAR, 0, ranks_);
+    return text;
+}
+
 void Communicator::stopIfAnyFailed(const std::optional<std::string>& error) const {
     const int mine = error ? rank_ : size_;
     int firstFailing = size_;

@@ -3,11 +3,14 @@
 // reports what it found (a failure, a wish to stop) and the ranks act on the agreed answer.
 #pragma once
 
+#include "core/FatalError.hpp"
+
 #include <mpi.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +30,11 @@ public:
 
     double maxOverRanks(double value) const;
     std::int64_t sumOverRanks(std::int64_t value) const;
+    // Each entry its largest value over the ranks, in place: several decisions in one message.
+    void maxOverRanks(std::span<double> values) const;
+    // Rank 0's values on every rank.
+    void broadcastFromFirst(std::span<double> values) const;
+    std::string broadcastFromFirst(std::string text) const;
 
     // Throws FatalError on every rank when any rank passes an error: the message is that of the
     // lowest failing rank, prefixed with its number. Returns on every rank otherwise.
@@ -41,5 +49,18 @@ private:
     int rank_ = 0;
     int size_ = 1;
 };
+
+// Runs `body` on this rank; a FatalError it throws on any rank stops every rank with the first
+// failing rank's message (stopIfAnyFailed).
+template <class Body>
+void together(const Communicator& ranks, Body&& body) {
+    std::optional<std::string> error;
+    try {
+        body();
+    } catch (const FatalError& e) {
+        error = e.what();
+    }
+    ranks.stopIfAnyFailed(error);
+}
 
 }  // namespace sph::parallel

@@ -8,7 +8,7 @@
 #include "core/ParticleSet.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/DomainBoxes.hpp"
-#include "parallel/FieldBytes.hpp"
+#include "core/FieldBytes.hpp"
 
 #include <cstdint>
 #include <vector>

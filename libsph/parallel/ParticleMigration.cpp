@@ -1,6 +1,6 @@
 #include "parallel/ParticleMigration.hpp"
 
-#include "parallel/FieldBytes.hpp"
+#include "core/FieldBytes.hpp"
 
 #include <optional>
 #include <span>

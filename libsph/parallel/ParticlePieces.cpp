@@ -1,45 +1,14 @@
 #include "parallel/ParticlePieces.hpp"
 
 #include "core/FatalError.hpp"
+#include "io/ParticleState.hpp"
 #include "io/PvtuFile.hpp"
-#include "parallel/FieldBytes.hpp"
 
 #include <fmt/format.h>
 
-#include <numeric>
 #include <optional>
 
 namespace sph::parallel {
-
-namespace {
-
-// Runs `body` on this rank and stops every rank with the first failing rank's message.
-template <class Body>
-void together(const Communicator& ranks, Body&& body) {
-    std::optional<std::string> error;
-    try {
-        body();
-    } catch (const FatalError& e) {
-        error = e.what();
-    }
-    ranks.stopIfAnyFailed(error);
-}
-
-// Appends `piece` to `set`: the same fields, or FatalError naming the piece.
-template <int D>
-void append(ParticleSet<D>& set, ParticleSet<D>& piece, const std::filesystem::path& file) {
-    if (writtenPointArrays(set) != writtenPointArrays(piece))
-        throw FatalError("error: particle piece '" + file.string() + "' holds other fields than the pieces before it");
-    const std::size_t first = set.size();
-    std::vector<std::uint32_t> all(piece.size());
-    std::iota(all.begin(), all.end(), 0u);
-    std::vector<std::byte> message;
-    pack(everyArray(piece), all, message);
-    set.resize(first + piece.size());
-    unpack(everyArray(set), first, message);
-}
-
-}  // namespace
 
 template <int D>
 void writeParticlePieces(const Communicator& ranks, const std::filesystem::path& directory, const std::string& name, const ParticleSet<D>& particles,
@@ -69,7 +38,7 @@ ParticleSet<D> readParticlePieces(const Communicator& ranks, const std::filesyst
             if (pieceHeader.time != header.time || pieceHeader.step != header.step)
                 throw FatalError(fmt::format("error: particle piece '{}' is of t = {:g} (step {}), the one before it of t = {:g} (step {})",
                                              pieces[p].string(), pieceHeader.time, pieceHeader.step, header.time, header.step));
-            append(set, piece, pieces[p]);
+            appendParticles(set, piece, pieces[p]);
         }
     });
     // Every rank has a header now: the same on all, or pieces of different writes were mixed.

@@ -123,9 +123,9 @@ public:
     std::vector<Patch<D>> patches;
 
     // Where a decomposed run's halo copies take their owners' values within an evaluation: after
-    // summation density (the fluid's density) and after the wall-particle models' update (the
-    // walls' state). Empty in a serial run.
-    std::function<void()> afterSummationDensity, afterWallUpdate;
+    // summation density (the fluid's density), after the wall-particle models' update (the
+    // walls' state) and at the end (the rates the integrator advances). Empty in a serial run.
+    std::function<void()> afterSummationDensity, afterWallUpdate, afterRates;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }

@@ -213,6 +213,7 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
         computeForces(gravityAt(t), terms);
     }
     if (terms != RateTerms::ViscousOnly) addWallForces(t);
+    if (afterRates) afterRates();
 }
 
 template <int D>

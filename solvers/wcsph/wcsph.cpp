@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #ifdef SPHKIT_WITH_MPI
-#include "parallel/ParallelRates.hpp"
+#include "parallel/ParallelRun.hpp"
 
 #include <mpi.h>
 #endif
@@ -39,9 +39,10 @@ Options:
                   earlier run wrote (without it the solver refuses to overwrite them)
   -threads <N>    run on N threads (default: one per 3,000 particles, per 800 in 3D, at most
                   OMP_NUM_THREADS or the cores)
-  -parallel       under mpirun (builds with MPI): share the case among the ranks; so far with
-                  -rates only, for fixed dynamicBoundary and dummyParticles walls
-                  (doc/userGuide.md)
+  -parallel       under mpirun (builds with MPI): share the case among the ranks, each
+                  writing its piece of every state (<time>/fluid.pvtu); so far with the native
+                  integrators, fixed dynamicBoundary and dummyParticles walls and no function
+                  objects (doc/userGuide.md)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
@@ -69,7 +70,7 @@ std::optional<int> parseThreadCount(const std::string& text) {
 #ifdef SPHKIT_WITH_MPI
 // Errors of the parallel run are collective (every rank stops with the same message): rank 0
 // prints them, as it prints the log.
-int runInParallel(const std::string& caseDirectory, sph::RunMode mode, std::optional<int> threads) {
+int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool overwrite, std::optional<int> threads) {
     MPI_Init(nullptr, nullptr);
     int status = 0;
     {
@@ -79,9 +80,7 @@ int runInParallel(const std::string& caseDirectory, sph::RunMode mode, std::opti
         if (status == 0)
             status = sph::exitCodeOf([&] {
                 try {
-                    if (mode != sph::RunMode::RatesOnly)
-                        throw sph::FatalError("error: wcsph -parallel runs with -rates only so far (issue 23); run the case without -parallel");
-                    sph::parallel::writeRatesInParallel(ranks, caseDirectory, threads);
+                    sph::parallel::runCaseInParallel(ranks, caseDirectory, mode, overwrite, threads);
                 } catch (const sph::FatalError&) {
                     if (ranks.rank() == 0) throw;
                     failedQuietly = true;
@@ -148,7 +147,7 @@ int main(int argc, char** argv) {
     }
     if (parallel) {
 #ifdef SPHKIT_WITH_MPI
-        return runInParallel(caseDirectory, mode, threads);
+        return runInParallel(caseDirectory, mode, overwrite, threads);
 #else
         fmt::print(stderr,
                    "error: -parallel needs a build with MPI (CMake SPHKIT_MPI; packages openmpi-bin libopenmpi-dev libtrilinos-zoltan-dev)\n");

@@ -260,7 +260,7 @@ TEST(BadInput, StartTimeThatWasNotWritten) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/controlDict", "startFrom       latestTime;", "startFrom       startTime;\nstartTime       0.5;");
     sph::generateParticles(dir, true);
-    expectContains(failureOf(dir, false), "no time directory 0.5 with a fluid.vtu; written times are: 0");
+    expectContains(failureOf(dir, false), "no time directory 0.5 with a fluid.vtu or fluid.pvtu; written times are: 0");
 }
 
 TEST(BadInput, EndTimeNotAfterTheStartTime) {
@@ -271,7 +271,7 @@ TEST(BadInput, EndTimeNotAfterTheStartTime) {
 
 TEST(BadInput, MissingStateTellsToGenerateParticles) {
     const auto dir = copyCase("damBreak2D");
-    expectContains(failureOf(dir, false), "has no time directory with a fluid.vtu state; run generateParticles first to write 0/");
+    expectContains(failureOf(dir, false), "has no time directory with a fluid.vtu or fluid.pvtu state; run generateParticles first to write 0/");
 }
 
 TEST(BadInput, MissingKeyword) {
@@ -477,5 +477,5 @@ TEST(BadInput, EmptyTimeDirectoryIsAWarning) {
     ::testing::internal::CaptureStdout();
     sph::runCase(dir);
     const std::string log = ::testing::internal::GetCapturedStdout();
-    expectContains(log, "warning: skipping the time directory " + (dir / "0.5").string() + ": it holds no fluid.vtu");
+    expectContains(log, "warning: skipping the time directory " + (dir / "0.5").string() + ": it holds no fluid.vtu or fluid.pvtu");
 }

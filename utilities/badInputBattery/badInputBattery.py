@@ -139,7 +139,7 @@ add("missing", "`system/sphSchemes` deleted", [action(lambda d: os.remove(os.pat
     "cannot open dictionary '<case>/system/sphSchemes': file not found", tools=("wcsph",))
 add("missing", "no 0/ (generateParticles not run)", [], "run generateParticles first to write 0/", tools=("wcsph",))
 add("missing", "`startTime` that was not written", [append(CONTROL, "startFrom startTime;\nstartTime 0.5;\n")],
-    "no time directory 0.5 with a fluid.vtu; written times are: 0")
+    "no time directory 0.5 with a fluid.vtu or fluid.pvtu; written times are: 0")
 add("missing", "the reference .csv of a function object deleted", [action(lambda d: os.remove(os.path.join(d, "martinMoyce1952Front.csv")))],
     "martinMoyce1952Front.csv", tools=("wcsph",))
 add("missing", "0/walls.vtu deleted", [action(lambda d: os.remove(os.path.join(d, "0", "walls.vtu")))], "walls.vtu' does not exist", tools=("wcsph",))

@@ -8,7 +8,7 @@
 #include "core/FatalError.hpp"
 #include "driver/FluidSetup.hpp"
 #include "parallel/Communicator.hpp"
-#include "parallel/FieldBytes.hpp"
+#include "core/FieldBytes.hpp"
 #include "parallel/HaloExchange.hpp"
 #include "parallel/ParticleMigration.hpp"
 #include "parallel/RcbPartition.hpp"
@@ -68,8 +68,7 @@ void report(const sph::parallel::Communicator& ranks, const std::filesystem::pat
     exchangesWith.insert(exchangesWith.end(), wallHalos.neighbours().begin(), wallHalos.neighbours().end());
     std::sort(exchangesWith.begin(), exchangesWith.end());
     exchangesWith.erase(std::unique(exchangesWith.begin(), exchangesWith.end()), exchangesWith.end());
-    const std::size_t memory = fluid.size() * parallel::bytesPerParticle(parallel::everyArray(fluid)) +
-                               walls.size() * parallel::bytesPerParticle(parallel::everyArray(walls));
+    const std::size_t memory = fluid.size() * bytesPerParticle(everyArray(fluid)) + walls.size() * bytesPerParticle(everyArray(walls));
     const std::array<double, statistics> mine{double(fluid.ownedCount()),
                                               double(walls.ownedCount()),
                                               double(fluid.haloCount()),

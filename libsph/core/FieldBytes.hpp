@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace sph::parallel {
+namespace sph {
 
 struct FieldBytes {
     std::byte* data;
@@ -38,4 +38,4 @@ std::size_t unpack(const std::vector<FieldBytes>& arrays, std::size_t first, std
 // The same to the particles `places` (as many as the message holds).
 void unpack(const std::vector<FieldBytes>& arrays, std::span<const std::uint32_t> places, std::span<const std::byte> message);
 
-}  // namespace sph::parallel
+}  // namespace sph

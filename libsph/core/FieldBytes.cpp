@@ -1,9 +1,9 @@
-#include "parallel/FieldBytes.hpp"
+#include "core/FieldBytes.hpp"
 
 #include <cstring>
 #include <stdexcept>
 
-namespace sph::parallel {
+namespace sph {
 
 template <int D>
 std::vector<FieldBytes> everyArray(ParticleSet<D>& set) {
@@ -61,4 +61,4 @@ template std::vector<FieldBytes> everyArray(ParticleSet<1>&);
 template std::vector<FieldBytes> everyArray(ParticleSet<2>&);
 template std::vector<FieldBytes> everyArray(ParticleSet<3>&);
 
-}  // namespace sph::parallel
+}  // namespace sph

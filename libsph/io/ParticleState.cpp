@@ -1,0 +1,72 @@
+#include "io/ParticleState.hpp"
+
+#include "core/FatalError.hpp"
+#include "core/FieldBytes.hpp"
+#include "io/PvtuFile.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace sph {
+
+std::filesystem::path stateFile(const std::filesystem::path& directory, const std::string& name) {
+    const std::filesystem::path pieces = directory / (name + ".pvtu");
+    return std::filesystem::exists(pieces) ? pieces : directory / (name + ".vtu");
+}
+
+StateHeader readStateHeader(const std::filesystem::path& file) {
+    return readParticleFileHeader(file.extension() == ".pvtu" ? readPvtuPieces(file).front() : file);
+}
+
+template <int D>
+void appendParticles(ParticleSet<D>& set, ParticleSet<D>& piece, const std::filesystem::path& file) {
+    if (writtenPointArrays(set) != writtenPointArrays(piece))
+        throw FatalError("error: particle piece '" + file.string() + "' holds other fields than the pieces before it");
+    const std::size_t first = set.size();
+    std::vector<std::uint32_t> all(piece.size());
+    std::iota(all.begin(), all.end(), 0u);
+    std::vector<std::byte> message;
+    pack(everyArray(piece), all, message);
+    set.resize(first + piece.size());
+    unpack(everyArray(set), first, message);
+}
+
+template <int D>
+ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::string& setName, StateHeader& header) {
+    if (file.extension() != ".pvtu") return readParticleFile<D>(file, setName, header);
+    const std::vector<std::filesystem::path> pieces = readPvtuPieces(file);
+    ParticleSet<D> set = readParticleFile<D>(pieces.front(), setName, header);
+    for (std::size_t p = 1; p < pieces.size(); ++p) {
+        StateHeader pieceHeader;
+        ParticleSet<D> piece = readParticleFile<D>(pieces[p], setName, pieceHeader);
+        if (pieceHeader.time != header.time || pieceHeader.step != header.step)
+            throw FatalError(fmt::format("error: particle piece '{}' is of t = {:g} (step {}), '{}' of t = {:g} (step {})", pieces[p].string(),
+                                         pieceHeader.time, pieceHeader.step, pieces.front().string(), header.time, header.step));
+        appendParticles(set, piece, pieces[p]);
+    }
+    if (!set.has(fields::orderCell) || !set.has(fields::orderRank)) return set;
+    // The serial order; the numbers themselves are the decomposed run's, not the state's.
+    const auto& cell = set[fields::orderCell];
+    const auto& rank = set[fields::orderRank];
+    std::vector<std::uint32_t> order(set.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return std::pair{static_cast<std::uint32_t>(cell[a]), rank[a]} < std::pair{static_cast<std::uint32_t>(cell[b]), rank[b]};
+    });
+    set.permute(order);
+    set.remove(fields::orderCell);
+    set.remove(fields::orderRank);
+    return set;
+}
+
+#define SPHKIT_INSTANTIATE(D)                                                                                     \
+    template ParticleSet<D> readParticleState<D>(const std::filesystem::path&, const std::string&, StateHeader&); \
+    template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);
+SPHKIT_INSTANTIATE(1)
+SPHKIT_INSTANTIATE(2)
+SPHKIT_INSTANTIATE(3)
+#undef SPHKIT_INSTANTIATE
+
+}  // namespace sph

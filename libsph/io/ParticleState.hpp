@@ -1,0 +1,38 @@
+// A particle state as the solver reads it: <name>.vtu, or <name>.pvtu with its pieces (a
+// decomposed run's output, doc/fileFormats.md) read one after the other into one set. Pieces carry
+// each particle's place in the serial storage order as two fields, orderCell and orderRank (its
+// cell at the last sort by cell, its place among that cell's particles); the particles are put
+// back in that order, so that a run continues from pieces, on any number of ranks or on one, as
+// it would have from the serial state.
+#pragma once
+
+#include "core/ParticleFields.hpp"
+#include "core/ParticleSet.hpp"
+#include "io/ParticleFile.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace sph {
+
+namespace fields {
+inline constexpr IntegerField orderCell{"orderCell"};
+inline constexpr IntegerField orderRank{"orderRank"};
+}  // namespace fields
+
+// <directory>/<name>.pvtu if it exists, else <directory>/<name>.vtu (which a read then finds or names
+// as missing).
+std::filesystem::path stateFile(const std::filesystem::path& directory, const std::string& name);
+
+// The header of a .vtu, or of a .pvtu's first piece.
+StateHeader readStateHeader(const std::filesystem::path& file);
+
+// A .vtu or a .pvtu (FatalError naming the file for a missing or inconsistent piece).
+template <int D>
+ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::string& setName, StateHeader& header);
+
+// Appends the particles of `piece` to `set`: the same written fields, or FatalError naming `file`.
+template <int D>
+void appendParticles(ParticleSet<D>& set, ParticleSet<D>& piece, const std::filesystem::path& file);
+
+}  // namespace sph

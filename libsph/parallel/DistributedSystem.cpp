@@ -1,0 +1,193 @@
+#include "parallel/DistributedSystem.hpp"
+
+#include "io/ParticleState.hpp"
+#include "parallel/ParticleMigration.hpp"
+#include "parallel/RcbPartition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+
+namespace sph::parallel {
+
+namespace {
+
+// Walls weigh a tenth of a fluid particle in the partition: their pairs are the fluid's.
+constexpr double wallWeight = 0.1;
+
+template <int D>
+auto orderKey(const ParticleSet<D>& set) {
+    return [cell = set[fields::orderCell].data(), rank = set[fields::orderRank].data()](std::uint32_t i) {
+        return std::pair{static_cast<std::uint32_t>(cell[i]), rank[i]};
+    };
+}
+
+// The particles of `set` in the serial order.
+template <int D>
+std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
+    std::vector<std::uint32_t> order(set.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto key = orderKey(set);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    return order;
+}
+
+template <int D>
+std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
+    std::vector<std::uint32_t> places;
+    for (std::size_t i = 0; i < owned.size(); ++i)
+        if (owned[i]) places.push_back(static_cast<std::uint32_t>(i));
+    return places;
+}
+
+}  // namespace
+
+template <int D>
+std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
+    if (std::holds_alternative<Antuono2010>(system.models().diffusion)) return "delta-SPH's density diffusion (antuono)";
+    if (system.shiftsParticles()) return "particle shifting";
+    if (!system.freeBodyPatches().empty()) return "a free body ('" + system.freeBodyPatches().front() + "')";
+    for (const Patch<D>& patch : system.patches) {
+        if (patch.motion) return "a moving patch ('" + patch.name + "')";
+        const std::string model = patch.model->describe();
+        if (model != "dynamicBoundary" && !model.starts_with("dummyParticles"))
+            return "the boundary model of patch '" + patch.name + "' (" + model + "; so far dynamicBoundary and dummyParticles)";
+    }
+    return std::nullopt;
+}
+
+template <int D>
+DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double skin)
+    : ranks_(ranks), system_(system), skin_(skin), width_(system.supportRadius() + skin), boxes_({}, Vec<D>::Zero()) {
+    // Every rank holds the whole case: each hands Zoltan every size-th particle.
+    std::vector<Vec<D>> points;
+    std::vector<double> weights;
+    const auto stride = static_cast<std::size_t>(ranks.size());
+    for (const auto& [set, weight] : {std::pair{&system.fluid, 1.0}, std::pair{&system.walls, wallWeight}})
+        for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < set->size(); i += stride)
+            points.push_back(set->position[i]), weights.push_back(weight);
+    Vec<D> period = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+        if (system.periodic()[static_cast<std::size_t>(d)]) period[d] = system.domainMax()[d] - system.domainMin()[d];
+    boxes_ = partitionByRcb<D>(ranks, points, weights, system.domainMin(), system.domainMax(), period);
+    boxes_.alignToCells(system.fluidCells());
+
+    // The serial order of the state as read is its storage order.
+    ParticleSet<D> fluid = system.fluid, walls = system.walls;
+    for (ParticleSet<D>* set : {&fluid, &walls}) {
+        // Written, so that a restart from pieces finds the serial order.
+        set->add(fields::orderCell, 0);
+        auto& rank = set->add(fields::orderRank, 0);
+        std::iota(rank.begin(), rank.end(), 0);
+    }
+    for (auto& [set, owned] : {std::pair{&fluid, &fluidOwned_}, std::pair{&walls, &wallsOwned_}}) {
+        std::vector<std::uint32_t> mine;
+        for (std::size_t i = 0; i < set->size(); ++i)
+            if (boxes_.ownerOf(set->position[i]) == ranks.rank()) mine.push_back(static_cast<std::uint32_t>(i));
+        set->keep(mine);
+    }
+    fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
+    wallHalos_.emplace(shareWithNeighbours(walls, wallsOwned_));
+    system.adoptParticles(std::move(fluid), std::move(walls));
+    positionsAtRedistribution_ = system.fluid.position;
+    refreshWithinEvaluations();
+}
+
+template <int D>
+HaloExchange<D> DistributedSystem<D>::shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned) {
+    const std::size_t ownedCount = set.ownedCount();
+    HaloExchange<D> halos(ranks_, set, boxes_, width_);
+    const std::vector<std::uint32_t> order = serialOrder(set);
+    set.keep(order);
+    halos.reorder(order);
+    owned.resize(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) owned[i] = order[i] < ownedCount;
+    return halos;
+}
+
+template <int D>
+void DistributedSystem<D>::numberByCell(ParticleSet<D>& fluid) const {
+    const CellLinkedList<D>& cells = system_.fluidCells();
+    std::vector<std::uint32_t> cell(fluid.size());
+    for (std::size_t i = 0; i < fluid.size(); ++i) cell[i] = static_cast<std::uint32_t>(cells.cellIndex(fluid.position[i]));
+    std::vector<std::uint32_t> order(fluid.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto key = orderKey(fluid);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return std::pair{cell[a], key(a)} < std::pair{cell[b], key(b)}; });
+    auto& orderCells = fluid[fields::orderCell];
+    auto& orderRanks = fluid[fields::orderRank];
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::uint32_t i = order[k];
+        orderRanks[i] = k > 0 && cell[order[k - 1]] == cell[i] ? orderRanks[order[k - 1]] + 1 : 0;
+        orderCells[i] = static_cast<int>(cell[i]);
+    }
+}
+
+template <int D>
+void DistributedSystem<D>::redistribute(bool sortByCell) {
+    ParticleSet<D>& fluid = system_.fluid;
+    fluid.keep(ownedPlaces<D>(fluidOwned_));
+    migrateParticles(ranks_, fluid, boxes_);
+    if (sortByCell) numberByCell(fluid);
+    fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
+    positionsAtRedistribution_ = fluid.position;
+}
+
+template <int D>
+double DistributedSystem<D>::largestDisplacement() const {
+    const std::vector<Vec<D>>& x = system_.fluid.position;
+    const Vec<D>& period = boxes_.period();
+    double largest2 = 0.0;
+#pragma omp parallel for reduction(max : largest2) schedule(static)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        Vec<D> moved = x[i] - positionsAtRedistribution_[i];
+        for (int d = 0; d < D; ++d)
+            if (period[d] > 0.0) moved[d] -= period[d] * std::nearbyint(moved[d] / period[d]);
+        largest2 = std::max(largest2, moved.squaredNorm());
+    }
+    return std::sqrt(largest2);
+}
+
+template <int D>
+std::size_t DistributedSystem<D>::ownedFluidCount() const {
+    return static_cast<std::size_t>(std::count(fluidOwned_.begin(), fluidOwned_.end(), 1));
+}
+
+template <int D>
+ParticleSet<D> DistributedSystem<D>::selected(const ParticleSet<D>& set, const std::vector<char>& owned) {
+    ParticleSet<D> part = set;
+    part.keep(ownedPlaces<D>(owned));
+    return part;
+}
+
+template <int D>
+void DistributedSystem<D>::refreshWithinEvaluations() {
+    FluidSystem<D>& system = system_;
+    system.afterSummationDensity = [this] { fluidHalos_->refresh(system_.fluid, fields::density); };
+    system.afterWallUpdate = [this] {
+        ParticleSet<D>& walls = system_.walls;
+        wallHalos_->refresh(walls, fields::pressure, fields::density);
+        if (walls.has(fields::viscousVelocity)) wallHalos_->refresh(walls, fields::viscousVelocity);
+    };
+    system.afterRates = [this] {
+        if (system_.continuity())
+            fluidHalos_->refresh(system_.fluid, fields::acceleration, fields::densityRate);
+        else
+            fluidHalos_->refresh(system_.fluid, fields::acceleration);
+        if (system_.wallDensityEvolves()) wallHalos_->refresh(system_.walls, fields::densityRate);
+    };
+}
+
+#define SPHKIT_INSTANTIATE(D)                                                           \
+    template std::optional<std::string> notYetOnSeveralRanks<D>(const FluidSystem<D>&); \
+    template class DistributedSystem<D>;
+#ifdef SPHKIT_HAS_2D
+SPHKIT_INSTANTIATE(2)
+#endif
+#ifdef SPHKIT_HAS_3D
+SPHKIT_INSTANTIATE(3)
+#endif
+#undef SPHKIT_INSTANTIATE
+
+}  // namespace sph::parallel

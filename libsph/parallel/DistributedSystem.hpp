@@ -1,0 +1,75 @@
+// One rank's share of a FluidSystem in a decomposed run: the particles it owns and copies of
+// the others' within the halo width of its box, stored together in the order the serial run
+// stores them. Every sum over neighbours then adds its terms in the serial sequence, and a run
+// on N ranks equals the serial run bit for bit.
+//
+// The serial order: the serial run sorts its fluid by cell every stepsBetweenCellSorts steps, and
+// the sort is stable, so a particle's place follows from (its cell at the last sort, its place
+// among that cell's particles in the order before). Both numbers are fields of the particle
+// (orderCell, orderRank). A rank numbers the particles of the cells it owns; it owns whole cells
+// (DomainBoxes::alignToCells), so it holds all of a cell's particles when it numbers them. The
+// walls never move: their order is their place in the state file.
+//
+// Between two redistributions the copies are advanced by the integrator like their owners, with
+// their owners' rates (refreshed at the end of each evaluation), so they stay equal to them
+// without resending the state; the copies' summed density and wall state are refreshed where
+// they are computed. A copy's own rates miss the neighbours beyond the halo and are never used.
+#pragma once
+
+#include "parallel/Communicator.hpp"
+#include "parallel/DomainBoxes.hpp"
+#include "parallel/HaloExchange.hpp"
+#include "physics/FluidSystem.hpp"
+
+#include <optional>
+#include <string>
+
+namespace sph::parallel {
+
+// What the decomposed run does not share yet, for the message that stops it; nothing when the
+// case runs on several ranks.
+template <int D>
+std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system);
+
+template <int D>
+class DistributedSystem {
+public:
+    // Collective. Every rank holds the whole case in `system`, as read; keeps this rank's share.
+    // Between two redistributions no particle may move more than skin / 2 (largestDisplacement).
+    DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double skin);
+
+    // Collective. Every fluid particle to the rank that owns its cell now, and new halos;
+    // `sortByCell` where the serial run sorts its fluid by cell (new order numbers).
+    void redistribute(bool sortByCell);
+
+    // The farthest a particle this rank holds moved since the last redistribution (over
+    // periodic seams, the shortest way).
+    double largestDisplacement() const;
+    double skin() const { return skin_; }
+
+    // This rank's owned particles, in the serial order (for output).
+    ParticleSet<D> ownedFluid() const { return selected(system_.fluid, fluidOwned_); }
+    ParticleSet<D> ownedWalls() const { return selected(system_.walls, wallsOwned_); }
+    std::size_t ownedFluidCount() const;
+
+    const DomainBoxes<D>& boxes() const { return boxes_; }
+
+private:
+    static ParticleSet<D> selected(const ParticleSet<D>& set, const std::vector<char>& owned);
+    // Copies of the others' particles within the halo width, the set's particles (owned ones
+    // only on entry) in the serial order after; returns the exchange that refreshes the copies.
+    HaloExchange<D> shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned);
+    void numberByCell(ParticleSet<D>& fluid) const;
+    void refreshWithinEvaluations();
+
+    Communicator ranks_;
+    FluidSystem<D>& system_;
+    double skin_;
+    double width_;
+    DomainBoxes<D> boxes_;
+    std::vector<char> fluidOwned_, wallsOwned_;  // per particle held: 1 if this rank owns it
+    std::optional<HaloExchange<D>> fluidHalos_, wallHalos_;
+    std::vector<Vec<D>> positionsAtRedistribution_;
+};
+
+}  // namespace sph::parallel

@@ -1,0 +1,251 @@
+#include "parallel/ParallelRun.hpp"
+
+#include "core/FatalError.hpp"
+#include "driver/BlowUpCheck.hpp"
+#include "driver/FluidSetup.hpp"
+#include "driver/Progress.hpp"
+#include "driver/RestartState.hpp"
+#include "driver/RunControls.hpp"
+#include "driver/StopRequest.hpp"
+#include "driver/Threads.hpp"
+#include "io/AtomicFile.hpp"
+#include "io/PvdCollection.hpp"
+#include "io/ParticleState.hpp"
+#include "io/TimeName.hpp"
+#include "parallel/DistributedSystem.hpp"
+#include "parallel/ParticlePieces.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <chrono>
+#include <limits>
+
+namespace sph::parallel {
+
+namespace {
+
+constexpr std::array nativeIntegrators{"symplectic", "verlet", "leapfrog", "predictorCorrector"};
+
+// The halo reaches this far past the kernel support, so that the particles may move a while
+// before the halos are built again (at most half of it, and a new build when a quarter is used).
+constexpr double skinPerSupport = 0.2;
+
+// A directory every rank writes into: rank 0 makes it under a temporary name and moves it into
+// place once all have written, so that a reader sees no directory or the complete one.
+template <class Write>
+void writeDirectoryTogether(const Communicator& ranks, const std::filesystem::path& directory, Write&& write) {
+    std::filesystem::path temporary;
+    together(ranks, [&] {
+        if (ranks.rank() == 0) temporary = temporaryDirectoryFor(directory);
+    });
+    temporary = ranks.broadcastFromFirst(temporary.string());
+    try {
+        write(temporary);
+    } catch (const FatalError& error) {
+        if (ranks.rank() == 0) abandonDirectory(temporary, directory, error);
+        throw;
+    }
+    together(ranks, [&] {
+        if (ranks.rank() == 0) moveDirectoryIntoPlace(temporary, directory);
+    });
+}
+
+template <int D>
+void writeState(const Communicator& ranks, const std::filesystem::path& directory, const DistributedSystem<D>& shared, StateHeader header,
+                const std::vector<std::string>& patchNames) {
+    writeParticlePieces(ranks, directory, "fluid", shared.ownedFluid(), header);
+    header.patchNames = patchNames;
+    writeParticlePieces(ranks, directory, "walls", shared.ownedWalls(), header);
+}
+
+// What the ranks agree on after each step: every entry the largest any rank reported.
+struct StepAgreement {
+    double nextStep;      // the stable size of the next step
+    double displacement;  // since the halos were built
+    bool blownUp;
+    int signal;
+    std::optional<RunControls> changedControls;  // rank 0's reading of controlDict
+};
+
+template <int D>
+StepAgreement agreeAfterStep(const Communicator& ranks, const CaseSetup<D>& setup, const DistributedSystem<D>& shared, bool blownUp,
+                             const StopRequest& stopRequest, ControlDictWatcher& watcher, const RunControls& controls, double t) {
+    const FluidSystem<D>& system = *setup.system;
+    const double stable = setup.fixedDeltaT > 0.0
+                              ? setup.fixedDeltaT
+                              : std::min(system.stableTimeStep(setup.courant, !setup.integrator->viscosityImplicit()), setup.maxDeltaT);
+    constexpr double none = std::numeric_limits<double>::lowest();
+    std::optional<RunControls> changed;
+    if (ranks.rank() == 0) changed = watcher.changed(controls, t);
+    std::array<double, 6> values{-stable,
+                                 shared.largestDisplacement(),
+                                 blownUp ? 1.0 : 0.0,
+                                 static_cast<double>(stopRequest.signal()),
+                                 changed ? changed->endTime : none,
+                                 changed ? changed->writeInterval : none};
+    ranks.maxOverRanks(values);
+    StepAgreement agreed{-values[0], values[1], values[2] > 0.0, static_cast<int>(values[3]), std::nullopt};
+    if (values[4] != none) agreed.changedControls = RunControls{values[4], values[5]};
+    return agreed;
+}
+
+template <int D>
+void requireSupported(const CaseSetup<D>& setup, RunMode mode) {
+    std::optional<std::string> missing = notYetOnSeveralRanks(*setup.system);
+    if (!missing && mode == RunMode::TimeLoop &&
+        std::find(nativeIntegrators.begin(), nativeIntegrators.end(), setup.integratorType) == nativeIntegrators.end())
+        missing = "the integrator " + setup.integratorType + " (so far symplectic, verlet, leapfrog and predictorCorrector)";
+    if (missing)
+        throw FatalError("error: wcsph -parallel does not run " + *missing + " on several ranks yet (issue 23); run the case without -parallel");
+}
+
+template <int D>
+void writeRates(const Communicator& ranks, const std::filesystem::path& caseDirectory, CaseSetup<D>& setup, const DistributedSystem<D>& shared) {
+    const double t = setup.header.time;
+    setup.system->evaluateRates(t);
+    const std::filesystem::path directory = caseDirectory / "postProcessing" / "rates" / timeName(t);
+    together(ranks, [&] {
+        if (ranks.rank() == 0) std::filesystem::create_directories(directory.parent_path());
+    });
+    writeDirectoryTogether(ranks, directory,
+                           [&](const std::filesystem::path& temporary) { writeState(ranks, temporary, shared, setup.header, setup.patchNames); });
+    fmt::print("\nWrote the right-hand side at t = {:g} on {} ranks to {} (fluid.pvtu, walls.pvtu)\n", t, ranks.size(), directory.string());
+}
+
+template <int D>
+void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
+              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher) {
+    FluidSystem<D>& system = *setup.system;
+    TimeIntegrator<D>& integrator = *setup.integrator;
+    const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
+    const auto fluidParticles = static_cast<std::size_t>(ranks.sumOverRanks(static_cast<std::int64_t>(shared.ownedFluidCount())));
+
+    PvdCollection pvd(caseDirectory / (caseName(caseDirectory) + ".pvd"));
+    for (const TimeDirectory& written : findTimeDirectories(caseDirectory))
+        if (written.time <= start.time) pvd.add(written.time, stateFilesOf(written));
+    StateHeader header = setup.header;
+    const auto writeTime = [&](double t, long step) {
+        auto timer = system.timers.time(Stage::Output);
+        header.time = t;
+        header.step = step;
+        collectRestartState(system, integrator, setup.integratorType, header);
+        const std::string name = timeName(t);
+        writeDirectoryTogether(ranks, caseDirectory / name,
+                               [&](const std::filesystem::path& temporary) { writeState(ranks, temporary, shared, header, setup.patchNames); });
+        if (ranks.rank() == 0) pvd.add(t, {name + "/fluid.pvtu", name + "/walls.pvtu"});
+    };
+
+    fmt::print("\nStarting time loop at t = {:g} (from {}) on {} ranks, endTime {:g}, writeInterval {:g}\n\n", setup.header.time, start.path.string(),
+               ranks.size(), controls.endTime, controls.writeInterval);
+    double t = setup.header.time;
+    long step = setup.header.step;
+    restoreRestartState(system, integrator, setup.integratorType, setup.header, t, stateFile(start.path, "fluid").string());
+    const StopRequest stopRequest;
+    StepAgreement agreed = agreeAfterStep(ranks, setup, shared, false, stopRequest, watcher, controls, t);
+    Progress progress(t, controls.endTime, fluidParticles);
+    double nextWrite = controls.nextWriteAfter(t);
+    const long firstStep = step;
+    while (true) {
+        const double timeTolerance = 1e-9 * controls.writeInterval;
+        if (t >= controls.endTime - timeTolerance) break;
+        const bool sortByCell = step % stepsBetweenCellSorts == 0;
+        if (sortByCell || agreed.displacement > 0.25 * shared.skin()) {
+            auto timer = system.timers.time(Stage::Neighbours);
+            shared.redistribute(sortByCell);
+        }
+        const double target = std::min(nextWrite, controls.endTime);
+        const double dt = t + agreed.nextStep > target - timeTolerance ? target - t : agreed.nextStep;
+        const double taken = integrator.step(system, t, dt);
+        system.wrapPeriodic();
+        t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
+        ++step;
+
+        std::optional<std::string> blowUp;
+        try {
+            checkFluidState(system.fluid, system.domainMin(), system.domainMax(), {c0, setup.rho0}, step, t);
+        } catch (const FatalError& e) {
+            blowUp = e.what();
+        }
+        agreed = agreeAfterStep(ranks, setup, shared, blowUp.has_value(), stopRequest, watcher, controls, t);
+        if (agreed.blownUp) ranks.stopIfAnyFailed(blowUp);
+        if (agreed.displacement > 0.5 * shared.skin())
+            throw FatalError(
+                fmt::format("error: at step {}, t = {:.9g}, a particle moved {:.3g} m since the halos were built, past the {:.3g} m "
+                            "the decomposed run allows between two builds; the step is too long for wcsph -parallel",
+                            step, t, agreed.displacement, 0.5 * shared.skin()));
+        const bool last = t >= controls.endTime - timeTolerance;
+        if (agreed.signal != 0 && !last) {
+            writeTime(t, step);
+            progress.finish();
+            fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}\n", signalName(agreed.signal), step, t,
+                       (caseDirectory / timeName(t)).string());
+            break;
+        }
+        if (t >= nextWrite - timeTolerance || last) {
+            writeTime(t, step);
+            nextWrite = controls.nextWriteAfter(t);
+        }
+        progress.update(step, t, taken);
+        if (agreed.changedControls) {
+            controls = *agreed.changedControls;
+            nextWrite = controls.nextWriteAfter(t);
+            progress.setEndTime(controls.endTime);
+        }
+    }
+    progress.finish();
+    const double wall = progress.elapsedSeconds();
+    const double particleSteps = static_cast<double>(step - firstStep) * static_cast<double>(fluidParticles);
+    fmt::print("\nEnd at t = {:g}: {} steps, {} fluid particles on {} ranks\n", t, step - firstStep, fluidParticles, ranks.size());
+    fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
+}
+
+template <int D>
+void runOfDimension(const Communicator& ranks, const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start,
+                    RunMode mode, std::optional<int> threads) {
+    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+    for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
+    requireSupported(setup, mode);
+    std::optional<RunControls> controls;
+    std::optional<ControlDictWatcher> watcher;
+    if (mode == RunMode::TimeLoop) {
+        controls = RunControls::read(controlDict);
+        if (!(controls->endTime > setup.header.time))
+            controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", setup.header.time, controls->endTime));
+        if (controlDict.found("functions"))
+            controlDict.fail("functions", "wcsph -parallel does not run function objects yet (issue 23); remove them or run without -parallel");
+        if (controlDict.getOrDefault("writeCsv", false)) controlDict.fail("writeCsv", "wcsph -parallel writes .vtu pieces only; set it to no");
+        const bool modifiable = controlDict.getOrDefault("runTimeModifiable", true);
+        // Rank 0 alone reads a changed controlDict; the others take its values.
+        watcher.emplace(caseDirectory / "system/controlDict", modifiable && ranks.rank() == 0);
+        controlDict.checkUnused();
+    }
+    FluidSystem<D>& system = *setup.system;
+    DistributedSystem<D> shared(ranks, system, skinPerSupport * system.supportRadius());
+    const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
+    if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher);
+}
+
+}  // namespace
+
+void runCaseInParallel(const Communicator& ranks, const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes,
+                       std::optional<int> threads) {
+    const Dictionary controlDict = readControlDict(caseDirectory);
+    // Rank 0 alone removes files; the others wait for it, then find the same start.
+    together(ranks, [&] {
+        if (ranks.rank() == 0) prepareStartTime(caseDirectory, controlDict, mode, overwriteLaterTimes);
+    });
+    const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
+    const int dimension = readStateHeader(stateFile(start.path, "fluid")).dimension;
+#ifdef SPHKIT_HAS_2D
+    if (dimension == 2) return runOfDimension<2>(ranks, caseDirectory, controlDict, start, mode, threads);
+#endif
+#ifdef SPHKIT_HAS_3D
+    if (dimension == 3) return runOfDimension<3>(ranks, caseDirectory, controlDict, start, mode, threads);
+#endif
+    throw FatalError(fmt::format("error: wcsph -parallel runs the 2D and 3D cases this build compiled, and '{}' is {}D",
+                                 stateFile(start.path, "fluid").string(), dimension));
+}
+
+}  // namespace sph::parallel

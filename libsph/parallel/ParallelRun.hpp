@@ -1,0 +1,30 @@
+// wcsph -parallel: a case run on the ranks mpirun starts, each rank with its share of the
+// particles (DistributedSystem) and OpenMP within it. With one thread per rank the run equals the
+// serial run bit for bit: the time step, the states written and the rates (-rates).
+//
+// One decision per step, taken together (a maximum over the ranks of a few numbers): the next
+// step's size, whether a rank found a blown-up particle, a stop signal, the displacement that
+// calls for new halos before the next cell sort, and rank 0's reading of a changed controlDict.
+// Output: <time>/fluid.pvtu and walls.pvtu with one piece per rank (fluid_<r>.vtu, ...), listed in
+// the case's .pvd; -rates writes the same to postProcessing/rates/<time>/.
+// So far (issue 23): the native integrators; fixed dynamicBoundary and dummyParticles walls;
+// continuity or summation density; periodic directions; any kernel, viscosity and density
+// diffusion without a density gradient; no function objects. Anything else stops before the
+// first step, naming what does not run on several ranks yet. Every rank reads the whole start
+// state, and a run restarts from serial states only.
+#pragma once
+
+#include "driver/Simulation.hpp"
+#include "parallel/Communicator.hpp"
+
+#include <filesystem>
+#include <optional>
+
+namespace sph::parallel {
+
+// Collective. FatalError on every rank for what the serial run rejects, what does not run on
+// several ranks yet, and a blow-up.
+void runCaseInParallel(const Communicator& ranks, const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes,
+                       std::optional<int> threads);
+
+}  // namespace sph::parallel

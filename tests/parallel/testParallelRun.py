@@ -1,0 +1,200 @@
+#!/usr/bin/python3
+"""mpirun -np N wcsph -parallel (oversubscribed, one thread per rank) against the serial run of
+the same build: every written state, fluid and walls, every array of every particle equal bit for
+bit, and the same step count, over runs of 100 to 600 steps (many cell sorts, migrations and halo
+builds). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
+particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
+channel with summation density and the 3D dam break. Also: the output opens as one series in
+ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
+stops all with its step and particle, and what does not run on several ranks stops every rank
+with one message. Run by CTest with SPHKIT_BIN set to the build's binaries and MPIEXEC to mpirun."""
+import os
+import re
+import shutil
+import signal
+import subprocess
+import tempfile
+import time
+import unittest
+
+import numpy as np
+import vtk
+
+from testParallelRates import arrays
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BIN = os.path.abspath(os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin")))
+MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
+ENV = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def edit(path, pattern, replacement, flags=re.M):
+    with open(path) as f:
+        text = f.read()
+    changed = re.sub(pattern, replacement, text, flags=flags)
+    if changed == text and not re.search(pattern, text, flags=flags):
+        raise ValueError(f"{pattern!r} not in {path}")
+    with open(path, "w") as f:
+        f.write(changed)
+
+
+class ParallelRun(unittest.TestCase):
+    def setUp(self):
+        self.work = tempfile.TemporaryDirectory()
+        self.addCleanup(self.work.cleanup)
+
+    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None):
+        """The case generated with its function objects removed, the run controls set."""
+        case = os.path.join(self.work.name, name + (f".{integrator}" if integrator else ""))
+        shutil.copytree(os.path.join(ROOT, "cases", name), case,
+                        ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
+        if boundary:  # the walls' model, before the generator lays them out for it
+            edit(os.path.join(case, "constant", "boundaryProperties"), r"type\s+\w+;(\s*noSlip\s+\w+;)?", f"type {boundary};")
+        if density:
+            edit(os.path.join(case, "system", "sphSchemes"), r"density\s+\{\s*type\s+\w+;\s*\}", f"density {{ type {density}; }}")
+        if integrator:
+            edit(os.path.join(case, "system", "timeIntegration"), r"integrator\s+\{[^}]*\}", f"integrator {{ type {integrator}; }}")
+        control = os.path.join(case, "system", "controlDict")
+        edit(control, r"^functions\s*\{.*\}\s*\Z", "", re.M | re.S)
+        edit(control, r"^endTime\s+[^;]+;", f"endTime {end_time};")
+        edit(control, r"^writeInterval\s+[^;]+;", f"writeInterval {write_interval};")
+        subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], capture_output=True, env=ENV, check=True)
+        return case
+
+    def run_case(self, case, ranks=None, expect_success=True):
+        command = [os.path.join(BIN, "wcsph"), "-case", case]
+        if ranks:
+            command = [MPIEXEC, "-np", str(ranks), "--oversubscribe", command[0], "-parallel", *command[1:]]
+        run = subprocess.run(command, capture_output=True, text=True, env=ENV, timeout=300)
+        if expect_success:
+            self.assertEqual(run.returncode, 0, run.stdout[-3000:] + run.stderr[-3000:])
+        return run
+
+    def assert_equal_to_serial(self, case, ranks, times, least_steps=100):
+        serial_case = case + ".serial"
+        shutil.copytree(case, serial_case)
+        serial_steps = int(re.search(r"End at t = \S+: (\d+) steps", self.run_case(serial_case).stdout).group(1))
+        self.assertGreaterEqual(serial_steps, least_steps)
+        for n in ranks:
+            copy = f"{case}.np{n}"
+            shutil.copytree(case, copy)
+            steps = int(re.search(r"End at t = \S+: (\d+) steps", self.run_case(copy, n).stdout).group(1))
+            self.assertEqual(steps, serial_steps, f"steps on {n} ranks")
+            for t in times:
+                self.assert_same_state(serial_case, copy, t, f"on {n} ranks")
+
+    def assert_same_state(self, serial_case, parallel_case, t, label):
+        for part in ("fluid", "walls"):
+            serial = arrays(os.path.join(serial_case, t, part + ".vtu"))
+            parallel = arrays(os.path.join(parallel_case, t, part + ".pvtu"))
+            # Pieces carry each particle's place in the serial order besides what the serial state holds.
+            self.assertEqual(sorted([*serial, "orderCell", "orderRank"]), sorted(parallel), f"{part} arrays at t = {t} {label}")
+            for name, values in serial.items():
+                other = parallel[name]
+                different = np.count_nonzero(np.any(values != other, axis=1) if values.ndim > 1 else values != other)
+                self.assertEqual(different, 0, f"{part} '{name}' at t = {t} differs at {different} of {len(values)} particles {label}")
+
+    def test_a_periodic_case_on_one_to_four_ranks(self):
+        self.assert_equal_to_serial(self.case("taylorGreen2D", 0.08, 0.04), (1, 2, 3, 4), ("0.04", "0.08"))
+
+    def test_the_2d_dam_break_as_shipped_on_dummy_particles(self):
+        self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01), (2, 3, 4), ("0.01", "0.02"))
+
+    def test_each_native_integrator_on_dynamic_boundary_walls(self):
+        for integrator in ("symplectic", "verlet", "leapfrog", "predictorCorrector"):
+            with self.subTest(integrator=integrator):
+                case = self.case("damBreak2D", 0.01, 0.005, "dynamicBoundary", integrator=integrator)
+                self.assert_equal_to_serial(case, (3,), ("0.005", "0.01"))
+
+    def test_the_periodic_channel_with_summation_density(self):
+        self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))
+
+    def test_the_3d_dam_break(self):
+        self.assert_equal_to_serial(self.case("damBreak3D", 0.02, 0.01), (2, 4), ("0.01", "0.02"))
+
+    def test_restarts_from_pieces_on_other_rank_counts_and_in_serial(self):
+        """2 ranks to t = 0.01, then 3 ranks to 0.02; 3 ranks to 0.01, then the serial solver to
+        0.02: both equal to the uninterrupted serial run, bit for bit (a restart re-evaluates the
+        rates from the written state, as the serial restart does)."""
+        case = self.case("damBreak2D", 0.02, 0.01)
+        serial_case = case + ".serial"
+        shutil.copytree(case, serial_case)
+        self.run_case(serial_case)
+        control = os.path.join("system", "controlDict")
+        for first, second in ((2, 3), (3, None)):
+            copy = f"{case}.{first}to{second or 1}"
+            shutil.copytree(case, copy)
+            edit(os.path.join(copy, control), r"^endTime\s+[^;]+;", "endTime 0.01;")
+            self.run_case(copy, first)
+            edit(os.path.join(copy, control), r"^endTime\s+[^;]+;", "endTime 0.02;")
+            run = self.run_case(copy, second)
+            self.assertIn(f"from {copy}/0.01", run.stdout)
+            if second:
+                self.assert_same_state(serial_case, copy, "0.02", f"after a restart from {first} to {second} ranks")
+            else:
+                for part in ("fluid", "walls"):
+                    serial = arrays(os.path.join(serial_case, "0.02", part + ".vtu"))
+                    restarted = arrays(os.path.join(copy, "0.02", part + ".vtu"))
+                    self.assertEqual(sorted(serial), sorted(restarted))
+                    for name, values in serial.items():
+                        self.assertTrue(np.array_equal(values, restarted[name]), f"{part} '{name}' after a serial restart from {first} ranks")
+
+    def test_the_output_opens_in_paraview_as_one_series(self):
+        case = self.case("damBreak2D", 0.002, 0.001)
+        self.run_case(case, 2)
+        with open(os.path.join(case, "damBreak2D.pvd")) as f:
+            files = re.findall(r'file="([^"]+)"', f.read())
+        self.assertEqual(files, ["0/fluid.vtu", "0/walls.vtu", "0.001/fluid.pvtu", "0.001/walls.pvtu", "0.002/fluid.pvtu", "0.002/walls.pvtu"])
+        for name in files[2:]:
+            grid = vtk.vtkXMLPUnstructuredGridReader()
+            grid.SetFileName(os.path.join(case, name))
+            grid.Update()
+            self.assertEqual(grid.GetOutput().GetNumberOfPoints(), 3200 if "fluid" in name else 1578, name)
+
+    def test_a_stop_signal_writes_the_state_where_the_ranks_stopped(self):
+        case = self.case("damBreak2D", 1.0, 1.0)
+        command = [MPIEXEC, "-np", "2", "--oversubscribe", os.path.join(BIN, "wcsph"), "-parallel", "-case", case]
+        run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
+        time.sleep(3)
+        run.send_signal(signal.SIGTERM)  # mpirun forwards it to every rank
+        output, _ = run.communicate(timeout=120)  # mpirun's status after a signal is its own: not checked
+        stopped = re.search(r"SIGTERM received: stopped at step (\d+), t = (\S+), and wrote the state to (\S+)", output)
+        self.assertIsNotNone(stopped, output[-3000:])
+        fluid = arrays(os.path.join(stopped.group(3), "fluid.pvtu"))
+        self.assertEqual(len(fluid["id"]), 3200)
+        self.assertEqual(sorted(fluid["id"]), list(range(len(fluid["id"]))))
+
+    def test_a_blow_up_on_one_rank_stops_every_rank_at_the_serial_step(self):
+        case = self.case("damBreak2D", 0.2, 0.2)
+        # A speed of sound ten times too low: a corner particle's density falls below rho0 / 2.
+        edit(os.path.join(case, "constant", "fluidProperties"), r"coefficient 10;", "coefficient 1;")
+        serial_case = case + ".serial"
+        shutil.copytree(case, serial_case)
+        serial = self.run_case(serial_case, expect_success=False)
+        blown = re.search(r"error: the run blew up at step (\d+), time (\S+): fluid particle", serial.stdout + serial.stderr)
+        self.assertIsNotNone(blown, serial.stdout[-2000:] + serial.stderr[-2000:])
+        run = self.run_case(case, 3, expect_success=False)
+        output = run.stdout + run.stderr
+        self.assertNotEqual(run.returncode, 0)
+        message = rf"rank \d of 3: error: the run blew up at step {blown.group(1)}, time {blown.group(2)}: fluid particle"
+        self.assertEqual(len(re.findall(message, output)), 1, output[-3000:])
+        self.assertEqual(output.count("blew up"), 1, output[-3000:])
+
+    def test_what_does_not_run_on_several_ranks_stops_every_rank_with_one_message(self):
+        case = os.path.join(self.work.name, "damBreak2D")
+        shutil.copytree(os.path.join(ROOT, "cases", "damBreak2D"), case,
+                        ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
+        subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], capture_output=True, env=ENV, check=True)
+        run = self.run_case(case, 2, expect_success=False)
+        self.assertNotEqual(run.returncode, 0)
+        message = "keyword 'functions' in dictionary 'controlDict': wcsph -parallel does not run function objects yet (issue 23)"
+        self.assertEqual((run.stdout + run.stderr).count(message), 1, run.stdout + run.stderr)
+        edit(os.path.join(case, "system", "controlDict"), r"^functions\s*\{.*\}\s*\Z", "", re.M | re.S)
+        edit(os.path.join(case, "system", "timeIntegration"), r"integrator\s+\{[^}]*\}", "integrator { type arkodeERK; }")
+        run = self.run_case(case, 2, expect_success=False)
+        message = "error: wcsph -parallel does not run the integrator arkodeERK"
+        self.assertEqual((run.stdout + run.stderr).count(message), 1, run.stdout + run.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
