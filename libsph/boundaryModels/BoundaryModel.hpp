@@ -43,6 +43,11 @@ public:
     // True when the patch's wall density is part of the integrated state.
     virtual bool evolvesWallDensity() const { return false; }
 
+    // How far from a fluid particle lie the particles whose values its rates depend on, through
+    // the model's passes (a decomposed run's halos reach this far): the kernel support, unless a
+    // pass reads values that another pass computed over its own neighbours.
+    virtual double reach(double support) const { return support; }
+
     // True when addWallForces() reads the fluid's acceleration before any wall force.
     virtual bool needsUncorrectedAcceleration() const { return false; }
 

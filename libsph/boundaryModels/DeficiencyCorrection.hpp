@@ -74,6 +74,9 @@ public:
     bool setsWallPressure() const override { return true; }  // p_j, extrapolated for the virtual particles
     bool needsUncorrectedAcceleration() const override { return calibration_ != DeficiencyCalibration::WallPressure; }
     std::string describe() const override;
+    // Fluid i reads the push of walls j within r_inf, whose R_j (and sample) reads the fluid s
+    // within r_inf (the sample radius), whose blends read the walls within r_inf of s.
+    double reach(double support) const override { return 2.0 * support + std::max(support, sampleRadius_); }
     void addFields(const BoundaryView<D>& view) override;
     void resume(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
     void addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t begin, std::size_t end) override;

@@ -41,6 +41,14 @@ std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
     return places;
 }
 
+// The farthest any selected model reads from an owned particle.
+template <int D>
+double haloReach(const FluidSystem<D>& system) {
+    double reach = system.supportRadius();
+    for (const Patch<D>& patch : system.patches) reach = std::max(reach, patch.model->reach(system.supportRadius()));
+    return reach;
+}
+
 }  // namespace
 
 template <int D>
@@ -51,15 +59,15 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
     for (const Patch<D>& patch : system.patches) {
         if (patch.motion) return "a moving patch ('" + patch.name + "')";
         const std::string model = patch.model->describe();
-        if (model != "dynamicBoundary" && !model.starts_with("dummyParticles"))
-            return "the boundary model of patch '" + patch.name + "' (" + model + "; so far dynamicBoundary and dummyParticles)";
+        if (model != "dynamicBoundary" && !model.starts_with("dummyParticles") && !model.starts_with("deficiencyCorrection"))
+            return "the boundary model of patch '" + patch.name + "' (" + model + "; so far dynamicBoundary, dummyParticles and deficiencyCorrection)";
     }
     return std::nullopt;
 }
 
 template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double skin)
-    : ranks_(ranks), system_(system), skin_(skin), width_(system.supportRadius() + skin), boxes_({}, Vec<D>::Zero()) {
+    : ranks_(ranks), system_(system), skin_(skin), width_(haloReach(system) + skin), boxes_({}, Vec<D>::Zero()) {
     // Every rank holds the whole case: each hands Zoltan every size-th particle.
     std::vector<Vec<D>> points;
     std::vector<double> weights;

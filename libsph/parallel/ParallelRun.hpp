@@ -7,7 +7,8 @@
 // calls for new halos before the next cell sort, and rank 0's reading of a changed controlDict.
 // Output: <time>/fluid.pvtu and walls.pvtu with one piece per rank (fluid_<r>.vtu, ...), listed in
 // the case's .pvd; -rates writes the same to postProcessing/rates/<time>/.
-// So far (issue 23): the native integrators; fixed dynamicBoundary and dummyParticles walls;
+// So far (issue 23): the native integrators; fixed dynamicBoundary, dummyParticles and
+// deficiencyCorrection walls (halos as wide as BoundaryModel::reach);
 // continuity or summation density; periodic directions; any kernel, viscosity and density
 // diffusion without a density gradient; no function objects. Anything else stops before the
 // first step, naming what does not run on several ranks yet. Every rank reads the whole start
