@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace sph {
 
 template <int D>
@@ -25,9 +27,14 @@ FunctionObjectSchedule<D>::FunctionObjectSchedule(const Dictionary& controlDict,
 }
 
 template <int D>
+bool FunctionObjectSchedule<D>::dueAt(double t) const {
+    return std::any_of(entries_.begin(), entries_.end(), [&](const Entry& entry) { return isDue(entry, t); });
+}
+
+template <int D>
 void FunctionObjectSchedule<D>::execute(const FluidSystemView<D>& system, double t, bool force) {
     for (Entry& entry : entries_) {
-        if (!force && t < entry.nextTime - 1e-6 * entry.interval) continue;
+        if (!force && !isDue(entry, t)) continue;
         entry.object->execute(system, t);
         while (entry.nextTime <= t + 1e-6 * entry.interval && entry.interval > 0.0) entry.nextTime += entry.interval;
     }

@@ -30,6 +30,9 @@ public:
     // Executes each object at the first step at or after each multiple of its interval, or
     // every object when `force` (the start, the end, a stop).
     void execute(const FluidSystemView<D>& system, double t, bool force);
+    // Whether execute(system, t, false) would execute any object.
+    bool dueAt(double t) const;
+    bool empty() const { return entries_.empty(); }
 
     // One console line of every error against the run's cost, and the same in
     // postProcessing/summary/<startTime>/summary.csv; nothing when no object compares.
@@ -42,6 +45,7 @@ private:
         double interval;
         double nextTime;
     };
+    static bool isDue(const Entry& entry, double t) { return t >= entry.nextTime - 1e-6 * entry.interval; }
     std::vector<Entry> entries_;
 };
 

@@ -34,6 +34,19 @@ void appendParticles(ParticleSet<D>& set, ParticleSet<D>& piece, const std::file
 }
 
 template <int D>
+std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
+    const auto& cell = set[fields::orderCell];
+    const auto& rank = set[fields::orderRank];
+    std::vector<std::uint32_t> order(set.size());
+    std::iota(order.begin(), order.end(), 0u);
+    // Cells are numbered below 2^32: as unsigned, whatever the int holding them reads.
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return std::pair{static_cast<std::uint32_t>(cell[a]), rank[a]} < std::pair{static_cast<std::uint32_t>(cell[b]), rank[b]};
+    });
+    return order;
+}
+
+template <int D>
 ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::string& setName, StateHeader& header) {
     if (file.extension() != ".pvtu") return readParticleFile<D>(file, setName, header);
     const std::vector<std::filesystem::path> pieces = readPvtuPieces(file);
@@ -48,14 +61,7 @@ ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::s
     }
     if (!set.has(fields::orderCell) || !set.has(fields::orderRank)) return set;
     // The serial order; the numbers themselves are the decomposed run's, not the state's.
-    const auto& cell = set[fields::orderCell];
-    const auto& rank = set[fields::orderRank];
-    std::vector<std::uint32_t> order(set.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return std::pair{static_cast<std::uint32_t>(cell[a]), rank[a]} < std::pair{static_cast<std::uint32_t>(cell[b]), rank[b]};
-    });
-    set.permute(order);
+    set.permute(serialOrder(set));
     set.remove(fields::orderCell);
     set.remove(fields::orderRank);
     return set;
@@ -63,7 +69,8 @@ ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::s
 
 #define SPHKIT_INSTANTIATE(D)                                                                                     \
     template ParticleSet<D> readParticleState<D>(const std::filesystem::path&, const std::string&, StateHeader&); \
-    template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);
+    template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);             \
+    template std::vector<std::uint32_t> serialOrder<D>(const ParticleSet<D>&);
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)
 SPHKIT_INSTANTIATE(3)

@@ -20,6 +20,10 @@ inline constexpr IntegerField orderCell{"orderCell"};
 inline constexpr IntegerField orderRank{"orderRank"};
 }  // namespace fields
 
+// The places of a set's particles in the serial order (sorted by orderCell, then orderRank).
+template <int D>
+std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set);
+
 // <directory>/<name>.pvtu if it exists, else <directory>/<name>.vtu (which a read then finds or names
 // as missing).
 std::filesystem::path stateFile(const std::filesystem::path& directory, const std::string& name);

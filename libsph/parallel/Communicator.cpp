@@ -59,6 +59,18 @@ void Communicator::stopIfAnyFailed(const std::optional<std::string>& error) cons
     throw FatalError("rank " + std::to_string(firstFailing) + " of " + std::to_string(size_) + ": " + message);
 }
 
+std::vector<std::byte> Communicator::gatherToFirst(const std::vector<std::byte>& mine, std::vector<std::size_t>& fromRank) const {
+    const int count = mpiByteCount(mine.size());
+    std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(static_cast<std::size_t>(size_));
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, ranks_);
+    std::size_t total = 0;
+    fromRank.assign(counts.begin(), counts.end());
+    for (std::size_t r = 0; r < counts.size() && rank_ == 0; ++r) offsets[r] = mpiByteCount(total), total += fromRank[r];
+    std::vector<std::byte> gathered(total);
+    MPI_Gatherv(mine.data(), count, MPI_BYTE, gathered.data(), counts.data(), offsets.data(), MPI_BYTE, 0, ranks_);
+    return gathered;
+}
+
 std::vector<std::byte> Communicator::exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const {
     const auto ranks = static_cast<std::size_t>(size_);
     if (toRank.size() != ranks) throw std::logic_error("exchangeWithAll needs one buffer per rank");

@@ -23,17 +23,6 @@ auto orderKey(const ParticleSet<D>& set) {
     };
 }
 
-// The particles of `set` in the serial order.
-template <int D>
-std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
-    std::vector<std::uint32_t> order(set.size());
-    std::iota(order.begin(), order.end(), 0u);
-    const auto key = orderKey(set);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-    return order;
-}
-
-template <int D>
 std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
     std::vector<std::uint32_t> places;
     for (std::size_t i = 0; i < owned.size(); ++i)
@@ -60,7 +49,8 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
         if (patch.motion) return "a moving patch ('" + patch.name + "')";
         const std::string model = patch.model->describe();
         if (model != "dynamicBoundary" && !model.starts_with("dummyParticles") && !model.starts_with("deficiencyCorrection"))
-            return "the boundary model of patch '" + patch.name + "' (" + model + "; so far dynamicBoundary, dummyParticles and deficiencyCorrection)";
+            return "the boundary model of patch '" + patch.name + "' (" + model +
+                   "; so far dynamicBoundary, dummyParticles and deficiencyCorrection)";
     }
     return std::nullopt;
 }
@@ -135,7 +125,7 @@ void DistributedSystem<D>::numberByCell(ParticleSet<D>& fluid) const {
 template <int D>
 void DistributedSystem<D>::redistribute(bool sortByCell) {
     ParticleSet<D>& fluid = system_.fluid;
-    fluid.keep(ownedPlaces<D>(fluidOwned_));
+    fluid.keep(ownedPlaces(fluidOwned_));
     migrateParticles(ranks_, fluid, boxes_);
     if (sortByCell) numberByCell(fluid);
     fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
@@ -165,7 +155,7 @@ std::size_t DistributedSystem<D>::ownedFluidCount() const {
 template <int D>
 ParticleSet<D> DistributedSystem<D>::selected(const ParticleSet<D>& set, const std::vector<char>& owned) {
     ParticleSet<D> part = set;
-    part.keep(ownedPlaces<D>(owned));
+    part.keep(ownedPlaces(owned));
     return part;
 }
 

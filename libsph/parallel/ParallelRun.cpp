@@ -13,6 +13,7 @@
 #include "io/ParticleState.hpp"
 #include "io/TimeName.hpp"
 #include "parallel/DistributedSystem.hpp"
+#include "parallel/GatheredFunctionObjects.hpp"
 #include "parallel/ParticlePieces.hpp"
 
 #include <fmt/format.h>
@@ -65,12 +66,14 @@ struct StepAgreement {
     double displacement;  // since the halos were built
     bool blownUp;
     int signal;
+    bool functionObjectsDue;
     std::optional<RunControls> changedControls;  // rank 0's reading of controlDict
 };
 
 template <int D>
 StepAgreement agreeAfterStep(const Communicator& ranks, const CaseSetup<D>& setup, const DistributedSystem<D>& shared, bool blownUp,
-                             const StopRequest& stopRequest, ControlDictWatcher& watcher, const RunControls& controls, double t) {
+                             const StopRequest& stopRequest, ControlDictWatcher& watcher, const RunControls& controls,
+                             const GatheredFunctionObjects<D>& functionObjects, double t) {
     const FluidSystem<D>& system = *setup.system;
     const double stable = setup.fixedDeltaT > 0.0
                               ? setup.fixedDeltaT
@@ -78,15 +81,16 @@ StepAgreement agreeAfterStep(const Communicator& ranks, const CaseSetup<D>& setu
     constexpr double none = std::numeric_limits<double>::lowest();
     std::optional<RunControls> changed;
     if (ranks.rank() == 0) changed = watcher.changed(controls, t);
-    std::array<double, 6> values{-stable,
+    std::array<double, 7> values{-stable,
                                  shared.largestDisplacement(),
                                  blownUp ? 1.0 : 0.0,
                                  static_cast<double>(stopRequest.signal()),
+                                 functionObjects.dueAt(t) ? 1.0 : 0.0,
                                  changed ? changed->endTime : none,
                                  changed ? changed->writeInterval : none};
     ranks.maxOverRanks(values);
-    StepAgreement agreed{-values[0], values[1], values[2] > 0.0, static_cast<int>(values[3]), std::nullopt};
-    if (values[4] != none) agreed.changedControls = RunControls{values[4], values[5]};
+    StepAgreement agreed{-values[0], values[1], values[2] > 0.0, static_cast<int>(values[3]), values[4] > 0.0, std::nullopt};
+    if (values[5] != none) agreed.changedControls = RunControls{values[5], values[6]};
     return agreed;
 }
 
@@ -115,10 +119,14 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
 
 template <int D>
 void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
-              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher) {
+              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, GatheredFunctionObjects<D>& functionObjects) {
     FluidSystem<D>& system = *setup.system;
     TimeIntegrator<D>& integrator = *setup.integrator;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
+    const auto executeFunctionObjects = [&](double t, bool force) {
+        auto timer = system.timers.time(Stage::FunctionObjects);
+        functionObjects.execute(shared, t, force);
+    };
     const auto fluidParticles = static_cast<std::size_t>(ranks.sumOverRanks(static_cast<std::int64_t>(shared.ownedFluidCount())));
 
     PvdCollection pvd(caseDirectory / (caseName(caseDirectory) + ".pvd"));
@@ -141,8 +149,9 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     double t = setup.header.time;
     long step = setup.header.step;
     restoreRestartState(system, integrator, setup.integratorType, setup.header, t, stateFile(start.path, "fluid").string());
+    executeFunctionObjects(t, true);
     const StopRequest stopRequest;
-    StepAgreement agreed = agreeAfterStep(ranks, setup, shared, false, stopRequest, watcher, controls, t);
+    StepAgreement agreed = agreeAfterStep(ranks, setup, shared, false, stopRequest, watcher, controls, functionObjects, t);
     Progress progress(t, controls.endTime, fluidParticles);
     double nextWrite = controls.nextWriteAfter(t);
     const long firstStep = step;
@@ -167,7 +176,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         } catch (const FatalError& e) {
             blowUp = e.what();
         }
-        agreed = agreeAfterStep(ranks, setup, shared, blowUp.has_value(), stopRequest, watcher, controls, t);
+        agreed = agreeAfterStep(ranks, setup, shared, blowUp.has_value(), stopRequest, watcher, controls, functionObjects, t);
         if (agreed.blownUp) ranks.stopIfAnyFailed(blowUp);
         if (agreed.displacement > 0.5 * shared.skin())
             throw FatalError(
@@ -176,12 +185,14 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
                             step, t, agreed.displacement, 0.5 * shared.skin()));
         const bool last = t >= controls.endTime - timeTolerance;
         if (agreed.signal != 0 && !last) {
+            executeFunctionObjects(t, true);
             writeTime(t, step);
             progress.finish();
             fmt::print("\n{} received: stopped at step {}, t = {:.9g}, and wrote the state to {}\n", signalName(agreed.signal), step, t,
                        (caseDirectory / timeName(t)).string());
             break;
         }
+        if (agreed.functionObjectsDue || last) executeFunctionObjects(t, last);
         if (t >= nextWrite - timeTolerance || last) {
             writeTime(t, step);
             nextWrite = controls.nextWriteAfter(t);
@@ -198,6 +209,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     const double particleSteps = static_cast<double>(step - firstStep) * static_cast<double>(fluidParticles);
     fmt::print("\nEnd at t = {:g}: {} steps, {} fluid particles on {} ranks\n", t, step - firstStep, fluidParticles, ranks.size());
     fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
+    functionObjects.reportErrorAgainstCost(caseDirectory, setup.header.time, {wall, fluidParticles, step - firstStep, t});
 }
 
 template <int D>
@@ -208,23 +220,26 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     requireSupported(setup, mode);
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;
+    std::optional<GatheredFunctionObjects<D>> functionObjects;
     if (mode == RunMode::TimeLoop) {
         controls = RunControls::read(controlDict);
         if (!(controls->endTime > setup.header.time))
             controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", setup.header.time, controls->endTime));
-        if (controlDict.found("functions"))
-            controlDict.fail("functions", "wcsph -parallel does not run function objects yet (issue 23); remove them or run without -parallel");
         if (controlDict.getOrDefault("writeCsv", false)) controlDict.fail("writeCsv", "wcsph -parallel writes .vtu pieces only; set it to no");
         const bool modifiable = controlDict.getOrDefault("runTimeModifiable", true);
         // Rank 0 alone reads a changed controlDict; the others take its values.
         watcher.emplace(caseDirectory / "system/controlDict", modifiable && ranks.rank() == 0);
-        controlDict.checkUnused();
+        functionObjects.emplace(ranks, caseDirectory, start, controlDict, setup.rho0);
+        // Rank 0 alone has read `functions`.
+        together(ranks, [&] {
+            if (ranks.rank() == 0) controlDict.checkUnused();
+        });
     }
     FluidSystem<D>& system = *setup.system;
     DistributedSystem<D> shared(ranks, system, skinPerSupport * system.supportRadius());
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
-    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher);
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects);
 }
 
 }  // namespace

@@ -3,16 +3,18 @@
 // serial run bit for bit: the time step, the states written and the rates (-rates).
 //
 // One decision per step, taken together (a maximum over the ranks of a few numbers): the next
-// step's size, whether a rank found a blown-up particle, a stop signal, the displacement that
-// calls for new halos before the next cell sort, and rank 0's reading of a changed controlDict.
-// Output: <time>/fluid.pvtu and walls.pvtu with one piece per rank (fluid_<r>.vtu, ...), listed in
-// the case's .pvd; -rates writes the same to postProcessing/rates/<time>/.
+// step's size, whether a rank found a blown-up particle, a stop signal, whether a function object
+// is due (rank 0 executes them on the gathered state, GatheredFunctionObjects), the displacement
+// that calls for new halos before the next cell sort, and rank 0's reading of a changed
+// controlDict. Output: <time>/fluid.pvtu and walls.pvtu with one piece per rank
+// (fluid_<r>.vtu, ...), listed in the case's .pvd; -rates writes the same to
+// postProcessing/rates/<time>/. A run restarts from pieces or a serial state, on any number of
+// ranks (io/ParticleState).
 // So far (issue 23): the native integrators; fixed dynamicBoundary, dummyParticles and
-// deficiencyCorrection walls (halos as wide as BoundaryModel::reach);
-// continuity or summation density; periodic directions; any kernel, viscosity and density
-// diffusion without a density gradient; no function objects. Anything else stops before the
-// first step, naming what does not run on several ranks yet. Every rank reads the whole start
-// state, and a run restarts from serial states only.
+// deficiencyCorrection walls (halos as wide as BoundaryModel::reach); continuity or summation
+// density; periodic directions; any kernel, viscosity and density diffusion without a density
+// gradient. Anything else stops before the first step, naming what does not run on several
+// ranks yet. Every rank reads the whole start state.
 #pragma once
 
 #include "driver/Simulation.hpp"
