@@ -13,9 +13,6 @@ namespace sph::parallel {
 
 namespace {
 
-// Walls weigh a tenth of a fluid particle in the partition: their pairs are the fluid's.
-constexpr double wallWeight = 0.1;
-
 template <int D>
 auto orderKey(const ParticleSet<D>& set) {
     return [cell = set[fields::orderCell].data(), rank = set[fields::orderRank].data()](std::uint32_t i) {
@@ -30,10 +27,13 @@ std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
     return places;
 }
 
-// The farthest any selected model reads from an owned particle.
+// The farthest any selected model reads from an owned particle: the kernel support, twice it
+// where a pass reads what another computed over its neighbours (delta-SPH's density gradient;
+// shifting's free-surface normals and density gradient), the boundary models' reach.
 template <int D>
 double haloReach(const FluidSystem<D>& system) {
-    double reach = system.supportRadius();
+    const bool chained = std::holds_alternative<Antuono2010>(system.models().diffusion) || system.shiftsParticles();
+    double reach = (chained ? 2.0 : 1.0) * system.supportRadius();
     for (const Patch<D>& patch : system.patches) reach = std::max(reach, patch.model->reach(system.supportRadius()));
     return reach;
 }
@@ -42,8 +42,6 @@ double haloReach(const FluidSystem<D>& system) {
 
 template <int D>
 std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
-    if (std::holds_alternative<Antuono2010>(system.models().diffusion)) return "delta-SPH's density diffusion (antuono)";
-    if (system.shiftsParticles()) return "particle shifting";
     if (!system.freeBodyPatches().empty()) return "a free body ('" + system.freeBodyPatches().front() + "')";
     for (const Patch<D>& patch : system.patches) {
         if (patch.motion) return "a moving patch ('" + patch.name + "')";
@@ -56,8 +54,8 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
 }
 
 template <int D>
-DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double skin)
-    : ranks_(ranks), system_(system), skin_(skin), width_(haloReach(system) + skin), boxes_({}, Vec<D>::Zero()) {
+DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight)
+    : ranks_(ranks), system_(system), skin_(skinPerSupport * system.supportRadius()), width_(haloReach(system) + skin_), boxes_({}, Vec<D>::Zero()) {
     // Every rank holds the whole case: each hands Zoltan every size-th particle.
     std::vector<Vec<D>> points;
     std::vector<double> weights;
@@ -148,8 +146,12 @@ double DistributedSystem<D>::largestDisplacement() const {
 }
 
 template <int D>
-std::size_t DistributedSystem<D>::ownedFluidCount() const {
-    return static_cast<std::size_t>(std::count(fluidOwned_.begin(), fluidOwned_.end(), 1));
+std::vector<int> DistributedSystem<D>::neighbourRanks() const {
+    std::vector<int> ranks = fluidHalos_->neighbours();
+    ranks.insert(ranks.end(), wallHalos_->neighbours().begin(), wallHalos_->neighbours().end());
+    std::sort(ranks.begin(), ranks.end());
+    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+    return ranks;
 }
 
 template <int D>
@@ -160,14 +162,30 @@ ParticleSet<D> DistributedSystem<D>::selected(const ParticleSet<D>& set, const s
 }
 
 template <int D>
+void DistributedSystem<D>::refreshShifted() {
+    ParticleSet<D>& fluid = system_.fluid;
+    if (system_.continuity()) fluidHalos_->refresh(fluid, fields::density);
+    fluidHalos_->refreshPositions(fluid);
+}
+
+template <int D>
 void DistributedSystem<D>::refreshWithinEvaluations() {
     FluidSystem<D>& system = system_;
     system.afterSummationDensity = [this] { fluidHalos_->refresh(system_.fluid, fields::density); };
-    system.afterWallUpdate = [this] {
-        ParticleSet<D>& walls = system_.walls;
-        wallHalos_->refresh(walls, fields::pressure, fields::density);
-        if (walls.has(fields::viscousVelocity)) wallHalos_->refresh(walls, fields::viscousVelocity);
-    };
+    // Only a wall state set from the fluid (dummy particles) differs on a copy: one that is
+    // integrated (dynamic boundary) advances as its owner's, and wall-force models set none.
+    const bool wallStateFromFluid = std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) {
+        return patch.model->actsThroughWallParticles() && !patch.model->evolvesWallDensity();
+    });
+    if (wallStateFromFluid)
+        system.afterWallUpdate = [this] {
+            ParticleSet<D>& walls = system_.walls;
+            if (walls.has(fields::viscousVelocity))
+                wallHalos_->refresh(walls, fields::pressure, fields::density, fields::viscousVelocity);
+            else
+                wallHalos_->refresh(walls, fields::pressure, fields::density);
+        };
+    system.largestOverRanks = [this](double value) { return ranks_.maxOverRanks(value); };
     system.afterRates = [this] {
         if (system_.continuity())
             fluidHalos_->refresh(system_.fluid, fields::acceleration, fields::densityRate);

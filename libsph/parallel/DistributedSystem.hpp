@@ -21,6 +21,7 @@
 #include "parallel/HaloExchange.hpp"
 #include "physics/FluidSystem.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -34,13 +35,22 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system);
 template <int D>
 class DistributedSystem {
 public:
+    // The halo reaches this far past what the models read (in kernel supports), so that the
+    // particles may move a while before the halos are built again: no particle may move more
+    // than half of it between two builds (largestDisplacement).
+    static constexpr double skinPerSupport = 0.2;
+
     // Collective. Every rank holds the whole case in `system`, as read; keeps this rank's share.
-    // Between two redistributions no particle may move more than skin / 2 (largestDisplacement).
-    DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double skin);
+    // Walls weigh `wallWeight` fluid particles in the partition.
+    DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight = 0.1);
 
     // Collective. Every fluid particle to the rank that owns its cell now, and new halos;
     // `sortByCell` where the serial run sorts its fluid by cell (new order numbers).
     void redistribute(bool sortByCell);
+
+    // Collective. After FluidSystem::shiftParticles: the owners' shifted positions (and densities)
+    // to their copies, which the shift computed from incomplete neighbourhoods.
+    void refreshShifted();
 
     // The farthest a particle this rank holds moved since the last redistribution (over
     // periodic seams, the shortest way).
@@ -50,11 +60,20 @@ public:
     // This rank's owned particles, in the serial order (for output).
     ParticleSet<D> ownedFluid() const { return selected(system_.fluid, fluidOwned_); }
     ParticleSet<D> ownedWalls() const { return selected(system_.walls, wallsOwned_); }
-    std::size_t ownedFluidCount() const;
+    std::size_t ownedFluidCount() const { return ownedCount(fluidOwned_); }
+    std::size_t ownedWallCount() const { return ownedCount(wallsOwned_); }
+
+    // The halo width, the ranks this one exchanges with (ascending), and what the halo
+    // exchanges sent so far: bytes and messages.
+    double haloWidth() const { return width_; }
+    std::vector<int> neighbourRanks() const;
+    std::size_t haloBytesSent() const { return fluidHalos_->bytesSent() + wallHalos_->bytesSent(); }
+    std::size_t haloMessagesSent() const { return fluidHalos_->messagesSent() + wallHalos_->messagesSent(); }
 
     const DomainBoxes<D>& boxes() const { return boxes_; }
 
 private:
+    static std::size_t ownedCount(const std::vector<char>& owned) { return static_cast<std::size_t>(std::count(owned.begin(), owned.end(), 1)); }
     static ParticleSet<D> selected(const ParticleSet<D>& set, const std::vector<char>& owned);
     // Copies of the others' particles within the halo width, the set's particles (owned ones
     // only on entry) in the serial order after; returns the exchange that refreshes the copies.

@@ -66,6 +66,8 @@ void HaloExchange<D>::exchange(const std::vector<FieldBytes>& arrays) const {
     }
     for (std::size_t k = 0; k < neighbours; ++k) {
         pack(arrays, sendLists_[k], outgoing[k]);
+        bytesSent_ += outgoing[k].size();
+        ++messagesSent_;
         MPI_Isend(outgoing[k].data(), mpiByteCount(outgoing[k].size()), MPI_BYTE, neighbours_[k], 1, ranks_.handle(), &requests.emplace_back());
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);

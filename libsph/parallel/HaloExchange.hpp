@@ -37,6 +37,9 @@ public:
     // The ranks this one exchanges with, ascending.
     const std::vector<int>& neighbours() const { return neighbours_; }
     std::size_t sentCount() const;
+    // What this rank's exchanges sent so far (the first fill included): bytes and messages.
+    std::size_t bytesSent() const { return bytesSent_; }
+    std::size_t messagesSent() const { return messagesSent_; }
 
 private:
     void exchange(const std::vector<FieldBytes>& arrays) const;
@@ -45,6 +48,7 @@ private:
     std::vector<int> neighbours_;
     std::vector<std::vector<std::uint32_t>> sendLists_;      // per neighbour: owned particles
     std::vector<std::vector<std::uint32_t>> receivePlaces_;  // per neighbour: where its copies go
+    mutable std::size_t bytesSent_ = 0, messagesSent_ = 0;
 };
 
 }  // namespace sph::parallel

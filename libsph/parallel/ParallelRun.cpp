@@ -28,10 +28,6 @@ namespace {
 
 constexpr std::array nativeIntegrators{"symplectic", "verlet", "leapfrog", "predictorCorrector"};
 
-// The halo reaches this far past the kernel support, so that the particles may move a while
-// before the halos are built again (at most half of it, and a new build when a quarter is used).
-constexpr double skinPerSupport = 0.2;
-
 // A directory every rank writes into: rank 0 makes it under a temporary name and moves it into
 // place once all have written, so that a reader sees no directory or the complete one.
 template <class Write>
@@ -166,6 +162,10 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         const double target = std::min(nextWrite, controls.endTime);
         const double dt = t + agreed.nextStep > target - timeTolerance ? target - t : agreed.nextStep;
         const double taken = integrator.step(system, t, dt);
+        if (system.shiftsParticles()) {
+            system.shiftParticles(taken);
+            shared.refreshShifted();
+        }
         system.wrapPeriodic();
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;
@@ -236,7 +236,7 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
         });
     }
     FluidSystem<D>& system = *setup.system;
-    DistributedSystem<D> shared(ranks, system, skinPerSupport * system.supportRadius());
+    DistributedSystem<D> shared(ranks, system);
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
     timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects);

@@ -126,6 +126,9 @@ public:
     // summation density (the fluid's density), after the wall-particle models' update (the
     // walls' state) and at the end (the rates the integrator advances). Empty in a serial run.
     std::function<void()> afterSummationDensity, afterWallUpdate, afterRates;
+    // The largest of every rank's values, where a pass needs a maximum over all particles (the
+    // shifting's bound by the fastest particle). Empty in a serial run.
+    std::function<double(double)> largestOverRanks;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }

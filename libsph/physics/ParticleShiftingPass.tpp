@@ -243,6 +243,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
     double maxSpeed2 = 0.0;
 #pragma omp parallel for reduction(max : maxSpeed2) schedule(static)
     for (std::size_t i = 0; i < n; ++i) maxSpeed2 = std::max(maxSpeed2, v[i].squaredNorm());
+    if (largestOverRanks) maxSpeed2 = largestOverRanks(maxSpeed2);
     const double maxSpeed = std::sqrt(maxSpeed2);
     std::visit(
         [&](const auto& kernel, const auto& law) {

@@ -83,7 +83,7 @@ class DecompositionReport(unittest.TestCase):
             run = subprocess.run([MPIEXEC, "-np", ranks, "--oversubscribe", os.path.join(BIN, "decompositionReport"), "-case", case, *options],
                                  capture_output=True, text=True, env=ENV, timeout=120)
             self.assertEqual(run.returncode, 0, run.stderr)
-            total = re.search(r"halo copies \(([\d.]+) % of the owned\), (\d+) messages per refresh, (\d+) bytes", run.stdout)
+            total = re.search(r"halo copies \(([\d.]+) % of the owned\), (\d+) messages and (\d+) bytes per evaluation", run.stdout)
             load = re.search(r"imbalance \(largest / mean weight\): ([\d.]+); memory per rank: largest ([\d.]+) MiB, mean ([\d.]+) MiB", run.stdout)
             printed = (f"{float(total.group(1)):.1f}", total.group(2), f"{int(total.group(3)):,}", f"{float(load.group(1)):.3f}", load.group(2), load.group(3))
             self.assertEqual(printed, (share, messages, size, imbalance, largest, mean), f"{name}{heavy_walls} on {ranks} ranks")

@@ -45,7 +45,7 @@ class ParallelRun(unittest.TestCase):
         self.work = tempfile.TemporaryDirectory()
         self.addCleanup(self.work.cleanup)
 
-    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False):
+    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False, schemes=None):
         """The case generated, the run controls set, its function objects removed unless `functions`."""
         case = os.path.join(self.work.name, name + (f".{integrator}" if integrator else ""))
         shutil.copytree(os.path.join(ROOT, "cases", name), case,
@@ -54,6 +54,13 @@ class ParallelRun(unittest.TestCase):
             edit(os.path.join(case, "constant", "boundaryProperties"), r"type\s+\w+;(\s*noSlip\s+\w+;)?", f"type {boundary};")
         if density:
             edit(os.path.join(case, "system", "sphSchemes"), r"density\s+\{\s*type\s+\w+;\s*\}", f"density {{ type {density}; }}")
+        if schemes:  # lines added to system/sphSchemes (a later keyword replaces an earlier one)
+            with open(os.path.join(case, "system", "sphSchemes")) as f:
+                text = f.read()
+            for line in schemes:
+                text = re.sub(rf"^{line.split()[0]}\s.*$", "", text, flags=re.M) + line + "\n"
+            with open(os.path.join(case, "system", "sphSchemes"), "w") as f:
+                f.write(text)
         if integrator:
             edit(os.path.join(case, "system", "timeIntegration"), r"integrator\s+\{[^}]*\}", f"integrator {{ type {integrator}; }}")
         control = os.path.join(case, "system", "controlDict")
@@ -126,6 +133,17 @@ class ParallelRun(unittest.TestCase):
 
     def test_the_deficiency_correction_in_the_dam_break(self):
         self.assert_equal_to_serial(self.case("damBreakWallPressure2D", 0.1, 0.05), (3,), ("0.05", "0.1"))
+
+    def test_delta_sph_and_particle_shifting(self):
+        # Passes over the neighbours of neighbours (the renormalised density gradient; the free
+        # surface's normals): halos of two kernel supports; shifted copies take their owners' places.
+        self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, schemes=["densityDiffusion { type antuono; delta 0.1; }"]), (3,),
+                                    ("0.01", "0.02"))
+        self.assert_equal_to_serial(self.case("taylorGreen2D", 0.08, 0.04, schemes=["particleShifting { type lind; }"]), (2, 3),
+                                    ("0.04", "0.08"))
+        self.assert_equal_to_serial(
+            self.case("damBreak2D", 0.02, 0.01, integrator="symplectic",
+                      schemes=["densityDiffusion { type antuono; delta 0.1; }", "particleShifting { type sun; }"]), (2, 4), ("0.01", "0.02"))
 
     def test_the_periodic_channel_with_summation_density(self):
         self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))
