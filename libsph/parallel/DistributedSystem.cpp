@@ -44,7 +44,6 @@ template <int D>
 std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
     if (!system.freeBodyPatches().empty()) return "a free body ('" + system.freeBodyPatches().front() + "')";
     for (const Patch<D>& patch : system.patches) {
-        if (patch.motion) return "a moving patch ('" + patch.name + "')";
         const std::string model = patch.model->describe();
         if (model != "dynamicBoundary" && !model.starts_with("dummyParticles") && !model.starts_with("deficiencyCorrection"))
             return "the boundary model of patch '" + patch.name + "' (" + model +
@@ -55,7 +54,12 @@ std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
 
 template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight)
-    : ranks_(ranks), system_(system), skin_(skinPerSupport * system.supportRadius()), width_(haloReach(system) + skin_), boxes_({}, Vec<D>::Zero()) {
+    : ranks_(ranks),
+      system_(system),
+      skin_(skinPerSupport * system.supportRadius()),
+      wallsMove_(std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.motion != nullptr; })),
+      width_(haloReach(system) + skin_),
+      boxes_({}, Vec<D>::Zero()) {
     // Every rank holds the whole case: each hands Zoltan every size-th particle.
     std::vector<Vec<D>> points;
     std::vector<double> weights;
@@ -87,6 +91,7 @@ DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D
     wallHalos_.emplace(shareWithNeighbours(walls, wallsOwned_));
     system.adoptParticles(std::move(fluid), std::move(walls));
     positionsAtRedistribution_ = system.fluid.position;
+    wallPositionsAtRedistribution_ = system.walls.position;
     refreshWithinEvaluations();
 }
 
@@ -128,21 +133,32 @@ void DistributedSystem<D>::redistribute(bool sortByCell) {
     if (sortByCell) numberByCell(fluid);
     fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
     positionsAtRedistribution_ = fluid.position;
+    if (!wallsMove_) return;
+    // Moving walls go where the fluid goes; the patches' ranges follow.
+    ParticleSet<D> walls = system_.walls;
+    walls.keep(ownedPlaces(wallsOwned_));
+    migrateParticles(ranks_, walls, boxes_);
+    wallHalos_.emplace(shareWithNeighbours(walls, wallsOwned_));
+    system_.adoptParticles(std::move(system_.fluid), std::move(walls));
+    wallPositionsAtRedistribution_ = system_.walls.position;
 }
 
 template <int D>
 double DistributedSystem<D>::largestDisplacement() const {
-    const std::vector<Vec<D>>& x = system_.fluid.position;
     const Vec<D>& period = boxes_.period();
-    double largest2 = 0.0;
+    const auto largestOf = [&](const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& before) {
+        double largest2 = 0.0;
 #pragma omp parallel for reduction(max : largest2) schedule(static)
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        Vec<D> moved = x[i] - positionsAtRedistribution_[i];
-        for (int d = 0; d < D; ++d)
-            if (period[d] > 0.0) moved[d] -= period[d] * std::nearbyint(moved[d] / period[d]);
-        largest2 = std::max(largest2, moved.squaredNorm());
-    }
-    return std::sqrt(largest2);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            Vec<D> moved = x[i] - before[i];
+            for (int d = 0; d < D; ++d)
+                if (period[d] > 0.0) moved[d] -= period[d] * std::nearbyint(moved[d] / period[d]);
+            largest2 = std::max(largest2, moved.squaredNorm());
+        }
+        return std::sqrt(largest2);
+    };
+    const double fluid = largestOf(system_.fluid.position, positionsAtRedistribution_);
+    return wallsMove_ ? std::max(fluid, largestOf(system_.walls.position, wallPositionsAtRedistribution_)) : fluid;
 }
 
 template <int D>

@@ -44,16 +44,17 @@ public:
     // Walls weigh `wallWeight` fluid particles in the partition.
     DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight = 0.1);
 
-    // Collective. Every fluid particle to the rank that owns its cell now, and new halos;
-    // `sortByCell` where the serial run sorts its fluid by cell (new order numbers).
+    // Collective. Every fluid particle (and wall particle of a moving patch) to the rank that
+    // owns its cell now, and new halos; `sortByCell` where the serial run sorts its fluid by cell
+    // (new order numbers; walls keep theirs).
     void redistribute(bool sortByCell);
 
     // Collective. After FluidSystem::shiftParticles: the owners' shifted positions (and densities)
     // to their copies, which the shift computed from incomplete neighbourhoods.
     void refreshShifted();
 
-    // The farthest a particle this rank holds moved since the last redistribution (over
-    // periodic seams, the shortest way).
+    // The farthest a particle this rank holds, fluid or wall, moved since the last
+    // redistribution (over periodic seams, the shortest way).
     double largestDisplacement() const;
     double skin() const { return skin_; }
 
@@ -84,11 +85,12 @@ private:
     Communicator ranks_;
     FluidSystem<D>& system_;
     double skin_;
+    bool wallsMove_;
     double width_;
     DomainBoxes<D> boxes_;
     std::vector<char> fluidOwned_, wallsOwned_;  // per particle held: 1 if this rank owns it
     std::optional<HaloExchange<D>> fluidHalos_, wallHalos_;
-    std::vector<Vec<D>> positionsAtRedistribution_;
+    std::vector<Vec<D>> positionsAtRedistribution_, wallPositionsAtRedistribution_;
 };
 
 }  // namespace sph::parallel

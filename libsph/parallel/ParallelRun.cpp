@@ -146,6 +146,8 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     long step = setup.header.step;
     restoreRestartState(system, integrator, setup.integratorType, setup.header, t, stateFile(start.path, "fluid").string());
     executeFunctionObjects(t, true);
+    for (const Patch<D>& patch : system.patches)
+        if (patch.motion) patch.motion->checkCovers(setup.header.time, controls.endTime);
     const StopRequest stopRequest;
     StepAgreement agreed = agreeAfterStep(ranks, setup, shared, false, stopRequest, watcher, controls, functionObjects, t);
     Progress progress(t, controls.endTime, fluidParticles);

@@ -10,10 +10,11 @@
 // (fluid_<r>.vtu, ...), listed in the case's .pvd; -rates writes the same to
 // postProcessing/rates/<time>/. A run restarts from pieces or a serial state, on any number of
 // ranks (io/ParticleState).
-// So far (issue 23): the native integrators; fixed dynamicBoundary, dummyParticles and
-// deficiencyCorrection walls (halos as wide as BoundaryModel::reach); continuity or summation
-// density; periodic directions; any kernel, viscosity and density diffusion without a density
-// gradient. Anything else stops before the first step, naming what does not run on several
+// So far (issue 23): the native integrators; dynamicBoundary, dummyParticles and
+// deficiencyCorrection walls, fixed or with a prescribed motion (halos as wide as
+// BoundaryModel::reach); continuity or summation density; periodic directions; any kernel,
+// viscosity and density diffusion; particle shifting. Not yet: free bodies, SUNDIALS, other wall
+// models. Anything else stops before the first step, naming what does not run on several
 // ranks yet. Every rank reads the whole start state.
 #pragma once
 

@@ -68,6 +68,9 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         for (std::size_t w = 0; w < walls.size(); ++w) area[w] = std::pow(spacing[w], D - 1);
     }
     if (viscous()) walls.add(fields::viscousVelocity, Vec<D>::Zero(), false);
+    // A patch's walls carry its index in the case's patch list; the patches run in wall order.
+    for (const Patch<D>& patch : patches)
+        patchOfWalls_.push_back(patch.end > patch.begin && walls.has(fields::patch) ? walls[fields::patch][patch.begin] : -1);
     indexWalls();
     for (Patch<D>& patch : patches) {
         wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
@@ -108,17 +111,13 @@ void FluidSystem<D>::indexWalls() {
 
 template <int D>
 void FluidSystem<D>::adoptParticles(ParticleSet<D> fluidSet, ParticleSet<D> wallSet) {
-    // A patch's walls carry its index in the case's patch list; the patches run in wall order.
-    std::vector<int> patchIndex(patches.size(), -1);
-    for (std::size_t p = 0; p < patches.size(); ++p)
-        if (patches[p].end > patches[p].begin) patchIndex[p] = walls[fields::patch][patches[p].begin];
     fluid = std::move(fluidSet);
     walls = std::move(wallSet);
     const auto& patchOfWall = walls[fields::patch];
     std::size_t begin = 0;
     for (std::size_t p = 0; p < patches.size(); ++p) {
         patches[p].begin = begin;
-        patches[p].end = begin + static_cast<std::size_t>(std::count(patchOfWall.begin(), patchOfWall.end(), patchIndex[p]));
+        patches[p].end = begin + static_cast<std::size_t>(std::count(patchOfWall.begin(), patchOfWall.end(), patchOfWalls_[p]));
         begin = patches[p].end;
     }
     if (!patches.empty() && begin != walls.size()) throw std::logic_error("adoptParticles: walls of no patch, or of a patch that had none");

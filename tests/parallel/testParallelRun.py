@@ -5,7 +5,8 @@ bit, and the same step count, over runs of 100 to 600 steps (many cell sorts, mi
 builds). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
 particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
 channel with summation density, the deficiency correction (calibrated in a tank; the boundary
-integral in the dam break) and the 3D dam break. Also: the output opens as one series in
+integral in the dam break), moving and deforming walls (a sliding lid, an oscillating tank, a
+steep bulge), delta-SPH and particle shifting, and the 3D dam break. Also: the output opens as one series in
 ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
 stops all with its step and particle, and what does not run on several ranks stops every rank
 with one message. The shipped dam break's function object writes what it writes serially.
@@ -66,6 +67,8 @@ class ParallelRun(unittest.TestCase):
         control = os.path.join(case, "system", "controlDict")
         if not functions and "functions" in open(control).read():
             edit(control, r"^functions\s*\{.*\}\s*\Z", "", re.M | re.S)
+        if "writeCsv" in open(control).read():  # the decomposed run writes .vtu pieces only
+            edit(control, r"^writeCsv\s+\w+;", "")
         edit(control, r"^endTime\s+[^;]+;", f"endTime {end_time};")
         edit(control, r"^writeInterval\s+[^;]+;", f"writeInterval {write_interval};")
         subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], capture_output=True, env=ENV, check=True)
@@ -144,6 +147,13 @@ class ParallelRun(unittest.TestCase):
         self.assert_equal_to_serial(
             self.case("damBreak2D", 0.02, 0.01, integrator="symplectic",
                       schemes=["densityDiffusion { type antuono; delta 0.1; }", "particleShifting { type sun; }"]), (2, 4), ("0.01", "0.02"))
+
+    def test_moving_and_deforming_walls(self):
+        # A sliding lid (dummy particles, verlet); an oscillating tank and a steep bulge rising
+        # from the floor, both on the deficiency correction: wall particles migrate with the fluid.
+        self.assert_equal_to_serial(self.case("lidDrivenCavity2D", 0.2, 0.1), (2, 3), ("0.1", "0.2"))
+        self.assert_equal_to_serial(self.case("sloshingTank2D", 0.2, 0.1), (3,), ("0.1", "0.2"))
+        self.assert_equal_to_serial(self.case("steepBulge2D", 0.2, 0.1), (2, 4), ("0.1", "0.2"))
 
     def test_the_periodic_channel_with_summation_density(self):
         self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))
