@@ -29,6 +29,9 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.path.abspath(os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin")))
 MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 ENV = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+# Under the sanitizers (ten times slower) each comparison runs on one rank count, the smallest
+# above one: the memory checks see every path, the release build compares every count.
+SANITIZED = os.environ.get("SPHKIT_SANITIZED") == "1"
 
 
 def edit(path, pattern, replacement, flags=re.M):
@@ -88,6 +91,8 @@ class ParallelRun(unittest.TestCase):
         shutil.copytree(case, serial_case)
         serial_steps = int(re.search(r"End at t = \S+: (\d+) steps", self.run_case(serial_case).stdout).group(1))
         self.assertGreaterEqual(serial_steps, least_steps)
+        if SANITIZED:
+            ranks = [min(r for r in ranks if r > 1)] if max(ranks) > 1 else ranks
         for n in ranks:
             copy = f"{case}.np{n}"
             shutil.copytree(case, copy)
@@ -120,7 +125,7 @@ class ParallelRun(unittest.TestCase):
         # With its function object (the surge front against Martin & Moyce's, every 0.001 s).
         case = self.case("damBreak2D", 0.02, 0.01, functions=True)
         self.assert_equal_to_serial(case, (2, 3, 4), ("0.01", "0.02"))
-        with open(os.path.join(case + ".np3", "postProcessing", "front", "0", "surgeFront.dat")) as f:
+        with open(os.path.join(case + ".np2", "postProcessing", "front", "0", "surgeFront.dat")) as f:
             self.assertEqual(sum(1 for line in f if not line.startswith("#")), 21)
 
     def test_each_native_integrator_on_dynamic_boundary_walls(self):
@@ -140,10 +145,11 @@ class ParallelRun(unittest.TestCase):
     def test_delta_sph_and_particle_shifting(self):
         # Passes over the neighbours of neighbours (the renormalised density gradient; the free
         # surface's normals): halos of two kernel supports; shifted copies take their owners' places.
-        self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, schemes=["densityDiffusion { type antuono; delta 0.1; }"]), (3,),
-                                    ("0.01", "0.02"))
-        self.assert_equal_to_serial(self.case("taylorGreen2D", 0.08, 0.04, schemes=["particleShifting { type lind; }"]), (2, 3),
-                                    ("0.04", "0.08"))
+        if not SANITIZED:  # the last case runs both
+            self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, schemes=["densityDiffusion { type antuono; delta 0.1; }"]), (3,),
+                                        ("0.01", "0.02"))
+            self.assert_equal_to_serial(self.case("taylorGreen2D", 0.08, 0.04, schemes=["particleShifting { type lind; }"]), (2, 3),
+                                        ("0.04", "0.08"))
         self.assert_equal_to_serial(
             self.case("damBreak2D", 0.02, 0.01, integrator="symplectic",
                       schemes=["densityDiffusion { type antuono; delta 0.1; }", "particleShifting { type sun; }"]), (2, 4), ("0.01", "0.02"))
@@ -159,6 +165,8 @@ class ParallelRun(unittest.TestCase):
         self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))
 
     def test_the_3d_dam_break(self):
+        if SANITIZED:
+            self.skipTest("a minute under the sanitizers; ParallelRates evaluates the 3D case there")
         self.assert_equal_to_serial(self.case("damBreak3D", 0.02, 0.01), (2, 4), ("0.01", "0.02"))
 
     def test_restarts_from_pieces_on_other_rank_counts_and_in_serial(self):
@@ -204,9 +212,15 @@ class ParallelRun(unittest.TestCase):
         case = self.case("damBreak2D", 1.0, 1.0)
         command = [MPIEXEC, "-np", "2", "--oversubscribe", os.path.join(BIN, "wcsph"), "-parallel", "-case", case]
         run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=ENV)
-        time.sleep(3)
+        started = ""
+        for line in run.stdout:  # every rank is past its set-up when rank 0 starts the loop
+            started += line
+            if line.startswith("Starting time loop"):
+                break
+        time.sleep(2)
         run.send_signal(signal.SIGTERM)  # mpirun forwards it to every rank
         output, _ = run.communicate(timeout=120)  # mpirun's status after a signal is its own: not checked
+        output = started + output
         stopped = re.search(r"SIGTERM received: stopped at step (\d+), t = (\S+), and wrote the state to (\S+)", output)
         self.assertIsNotNone(stopped, output[-3000:])
         fluid = arrays(os.path.join(stopped.group(3), "fluid.pvtu"))
