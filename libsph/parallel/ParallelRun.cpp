@@ -19,7 +19,6 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <chrono>
 #include <limits>
 
 namespace sph::parallel {
