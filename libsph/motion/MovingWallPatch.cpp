@@ -7,31 +7,44 @@ namespace sph {
 
 namespace {
 
-// 2D walls generated along a curve (polyline, polygon, circle, ellipse) keep their surface
-// particles (layer 0) in order along it: the normal is the neighbours' chord turned by 90
-// degrees to the side of the initial normal, the spacing the mean distance to the
-// neighbours; a closed curve wraps around. Exact for any deformation of a curved wall.
-// False, with nothing changed, when storage order is not the order along the wall (boxWalls).
-bool surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end) {
+// The surface particles (layer 0) of walls [begin, end), in storage order.
+template <int D>
+std::vector<std::size_t> surfaceParticles(const ParticleSet<D>& walls, std::size_t begin, std::size_t end) {
     const auto& layer = walls[fields::layer];
+    std::vector<std::size_t> surface;
+    for (std::size_t w = begin; w < end; ++w)
+        if (layer[w] == 0) surface.push_back(w);
+    return surface;
+}
+
+// Whether surface particles a and b were neighbours along the curve at the start (by the
+// spacing at the start, where the state keeps it: the current one stretches with the wall).
+bool adjacentAtStart(const ParticleSet<2>& walls, std::size_t a, std::size_t b) {
+    const auto& x0 = walls[fields::initialPosition];
+    const auto& spacing = walls[walls.has(fields::initialSpacing) ? fields::initialSpacing : fields::spacing];
+    return (x0[b] - x0[a]).norm() <= 1.5 * spacing[a];
+}
+
+// 2D walls generated along a curve (polyline, polygon, circle, ellipse) keep their surface
+// particles in order along it: the normal is the neighbours' chord turned by 90 degrees to the
+// side of the initial normal, the spacing the mean distance to the neighbours; a closed curve
+// wraps around. Exact for any deformation of a curved wall.
+void surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end) {
     auto& normal = walls[fields::normal];
     auto& spacing = walls[fields::spacing];
     auto& area = walls[fields::area];
     const auto& n0 = walls[fields::initialNormal];
-    const auto& x0 = walls[fields::initialPosition];
-    std::vector<std::size_t> surface;
-    for (std::size_t w = begin; w < end; ++w)
-        if (layer[w] == 0) surface.push_back(w);
+    const std::vector<std::size_t> surface = surfaceParticles(walls, begin, end);
     const std::size_t m = surface.size();
-    if (m < 3) return true;
-    for (std::size_t k = 1; k < m; ++k)
-        if ((x0[surface[k]] - x0[surface[k - 1]]).norm() > 1.5 * spacing[surface[k - 1]]) return false;
+    if (m < 3) return;
     const auto& x = walls.position;
     const bool closed = (x[surface.front()] - x[surface.back()]).norm() < 1.5 * spacing[surface.front()];
     for (std::size_t k = 0; k < m; ++k) {
-        const bool first = k == 0, last = k + 1 == m;
-        const std::size_t previous = first ? (closed ? surface[m - 1] : surface[k]) : surface[k - 1];
-        const std::size_t next = last ? (closed ? surface[0] : surface[k]) : surface[k + 1];
+        // A piece's end (a gap to the next particle held) counts as an end of the curve.
+        const bool first = k == 0 || !adjacentAtStart(walls, surface[k - 1], surface[k]);
+        const bool last = k + 1 == m || !adjacentAtStart(walls, surface[k], surface[k + 1]);
+        const std::size_t previous = first ? (k == 0 && closed ? surface[m - 1] : surface[k]) : surface[k - 1];
+        const std::size_t next = last ? (k + 1 == m && closed ? surface[0] : surface[k]) : surface[k + 1];
         const Vec<2> chord = x[next] - x[previous];
         Vec<2> n(-chord.y(), chord.x());
         n.normalize();
@@ -43,7 +56,6 @@ bool surfaceFromChords(ParticleSet<2>& walls, std::size_t begin, std::size_t end
         // The area vector is half the chord turned by 90 degrees: s/sqrt(2) at a right-angled corner.
         area[surface[k]] = atEnd ? spacing[surface[k]] : 0.5 * chord.norm();
     }
-    return true;
 }
 
 // Nanson's formula from the motion itself, for every layer (3D surface particles, and 2D
@@ -71,7 +83,20 @@ void surfaceFromMotion(ParticleSet<D>& walls, const PatchMotion<D>& motion, std:
 }  // namespace
 
 template <int D>
-void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t) {
+bool surfaceAlongCurve(const ParticleSet<D>& walls, std::size_t begin, std::size_t end) {
+    if constexpr (D != 2) {
+        return false;
+    } else {
+        if (!walls.has(fields::layer) || !walls.has(fields::spacing) || !walls.has(fields::initialPosition)) return false;
+        const std::vector<std::size_t> surface = surfaceParticles(walls, begin, end);
+        for (std::size_t k = 1; k < surface.size(); ++k)
+            if (!adjacentAtStart(walls, surface[k - 1], surface[k])) return false;
+        return true;
+    }
+}
+
+template <int D>
+void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t, bool alongCurve) {
     const auto& x0 = walls[fields::initialPosition];
     const auto& n0 = walls[fields::initialNormal];
     auto& velocity = walls[fields::velocity];
@@ -86,7 +111,7 @@ void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::siz
     }
     if (!motion.deforms()) return;
     if constexpr (D == 2)
-        if (surfaceFromChords(walls, begin, end)) return;
+        if (alongCurve) return surfaceFromChords(walls, begin, end);
     if constexpr (D >= 2) surfaceFromMotion(walls, motion, begin, end, t);
 }
 
@@ -105,9 +130,12 @@ void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::
     body.setLoads(force, torque, gravity, t);
 }
 
-template void moveWallPatch<1>(ParticleSet<1>&, const PatchMotion<1>&, std::size_t, std::size_t, double);
-template void moveWallPatch<2>(ParticleSet<2>&, const PatchMotion<2>&, std::size_t, std::size_t, double);
-template void moveWallPatch<3>(ParticleSet<3>&, const PatchMotion<3>&, std::size_t, std::size_t, double);
+template bool surfaceAlongCurve<1>(const ParticleSet<1>&, std::size_t, std::size_t);
+template bool surfaceAlongCurve<2>(const ParticleSet<2>&, std::size_t, std::size_t);
+template bool surfaceAlongCurve<3>(const ParticleSet<3>&, std::size_t, std::size_t);
+template void moveWallPatch<1>(ParticleSet<1>&, const PatchMotion<1>&, std::size_t, std::size_t, double, bool);
+template void moveWallPatch<2>(ParticleSet<2>&, const PatchMotion<2>&, std::size_t, std::size_t, double, bool);
+template void moveWallPatch<3>(ParticleSet<3>&, const PatchMotion<3>&, std::size_t, std::size_t, double, bool);
 template void loadFreeBody<1>(PatchMotion<1>&, const ParticleSet<1>&, const std::vector<Vec<1>>&, const Vec<1>&, double);
 template void loadFreeBody<2>(PatchMotion<2>&, const ParticleSet<2>&, const std::vector<Vec<2>>&, const Vec<2>&, double);
 template void loadFreeBody<3>(PatchMotion<3>&, const ParticleSet<3>&, const std::vector<Vec<3>>&, const Vec<3>&, double);

@@ -10,12 +10,21 @@
 
 namespace sph {
 
+// Whether the patch's walls [begin, end) were generated along a 2D curve: their surface particles
+// (layer 0) in order along it, each within 1.5 spacings of the next at the start. Decided on the
+// whole patch, once: a rank of a decomposed run holds pieces of it.
+template <int D>
+bool surfaceAlongCurve(const ParticleSet<D>& walls, std::size_t begin, std::size_t end);
+
 // Puts the wall particles [begin, end) where the motion has them at t: position, velocity,
 // acceleration and normal of each, from its initial position and normal. A deforming patch's
-// normals, spacings and areas are then recomputed: from the moved surface's chords where a 2D
-// patch was generated along a curve, else from the motion's area stretch (Nanson's formula).
+// normals, spacings and areas are then recomputed: from the moved surface's chords where the
+// patch lies along a curve (surfaceAlongCurve), else from the motion's area stretch (Nanson's
+// formula). Along a curve, the walls held may be pieces of it (a rank's share): a piece's end
+// that is no end of the curve takes itself as its missing neighbour, and its values are the
+// owner's to send.
 template <int D>
-void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t);
+void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t, bool alongCurve);
 
 // A free body takes the reaction of what its patch's wall forces added to the fluid's owned
 // particles: F = -sum_i m_i (a_i - a_i^before) and, in 2D, the torque of those forces about its

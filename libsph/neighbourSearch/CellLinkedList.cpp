@@ -176,6 +176,22 @@ typename CellLinkedList<D>::StencilRanges CellLinkedList<D>::stencilRanges(const
 }
 
 template <int D>
+typename CellLinkedList<D>::StencilRanges CellLinkedList<D>::stencilRanges(const Vec<D>& x, const std::vector<std::uint8_t>& keepCell) const {
+    StencilRanges stencil;
+    forEachStencilRow<D>(cellCoordinates(x), dims_, periodic_, [&](long first, long last) {
+        for (long cell = first; cell <= last; ++cell) {
+            if (!keepCell[static_cast<std::size_t>(cell)]) continue;
+            long runEnd = cell;  // consecutive kept cells make one range
+            while (runEnd < last && keepCell[static_cast<std::size_t>(runEnd + 1)]) ++runEnd;
+            const std::uint32_t begin = cellStart_[static_cast<std::size_t>(cell)], end = cellStart_[static_cast<std::size_t>(runEnd) + 1];
+            if (begin < end) stencil.ranges[static_cast<std::size_t>(stencil.count++)] = {begin, end};
+            cell = runEnd;
+        }
+    });
+    return stencil;
+}
+
+template <int D>
 void CellLinkedList<D>::markCellsNearPoints() {
     pointNear_.assign(cellCount(), 0);
 }

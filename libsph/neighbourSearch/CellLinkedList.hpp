@@ -45,6 +45,9 @@ public:
         const Range* end() const { return ranges.data() + count; }
     };
     StencilRanges stencilRanges(const Vec<D>& x) const;
+    // The same restricted to the cells with keepCell[cell] != 0 (one entry per cell), in the
+    // same order.
+    StencilRanges stencilRanges(const Vec<D>& x, const std::vector<std::uint8_t>& keepCell) const;
 
     // Calls visit(j, x - x_j, |x - x_j|^2) for every point j with |x - x_j| < radius.
     template <class Visit>

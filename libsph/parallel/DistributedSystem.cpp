@@ -5,8 +5,10 @@
 #include "parallel/RcbPartition.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace sph::parallel {
 
@@ -58,19 +60,16 @@ DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D
       skin_(skinPerSupport * system.supportRadius()),
       wallsMove_(std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.motion != nullptr; })),
       width_(haloReach(system) + skin_),
+      wallWeight_(wallWeight),
       boxes_({}, Vec<D>::Zero()) {
     // Every rank holds the whole case: each hands Zoltan every size-th particle.
-    std::vector<Vec<D>> points;
-    std::vector<double> weights;
     const auto stride = static_cast<std::size_t>(ranks.size());
-    for (const auto& [set, weight] : {std::pair{&system.fluid, 1.0}, std::pair{&system.walls, wallWeight}})
-        for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < set->size(); i += stride)
-            points.push_back(set->position[i]), weights.push_back(weight);
-    Vec<D> period = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-        if (system.periodic()[static_cast<std::size_t>(d)]) period[d] = system.domainMax()[d] - system.domainMin()[d];
-    boxes_ = partitionByRcb<D>(ranks, points, weights, system.domainMin(), system.domainMax(), period);
-    boxes_.alignToCells(system.fluidCells());
+    std::vector<std::uint32_t> fluidSample, wallSample;
+    for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < system.fluid.size(); i += stride)
+        fluidSample.push_back(static_cast<std::uint32_t>(i));
+    for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < system.walls.size(); i += stride)
+        wallSample.push_back(static_cast<std::uint32_t>(i));
+    partition(fluidSample, wallSample, 1.0);
 
     // The serial order of the state as read is its storage order.
     ParticleSet<D> fluid = system.fluid, walls = system.walls;
@@ -92,6 +91,26 @@ DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D
     positionsAtRedistribution_ = system.fluid.position;
     wallPositionsAtRedistribution_ = system.walls.position;
     refreshWithinEvaluations();
+}
+
+template <int D>
+void DistributedSystem<D>::partition(const std::vector<std::uint32_t>& fluid, const std::vector<std::uint32_t>& walls, double weightPerParticle) {
+    std::vector<Vec<D>> points;
+    std::vector<double> weights;
+    for (const auto& [set, places, weight] :
+         {std::tuple{&system_.fluid, &fluid, weightPerParticle}, std::tuple{&system_.walls, &walls, wallWeight_ * weightPerParticle}})
+        for (const std::uint32_t i : *places) points.push_back(set->position[i]), weights.push_back(weight);
+    Vec<D> period = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+        if (system_.periodic()[static_cast<std::size_t>(d)]) period[d] = system_.domainMax()[d] - system_.domainMin()[d];
+    boxes_ = partitionByRcb<D>(ranks_, points, weights, system_.domainMin(), system_.domainMax(), period);
+    boxes_.alignToCells(system_.fluidCells());
+}
+
+template <int D>
+void DistributedSystem<D>::repartition(double weightPerParticle) {
+    partition(ownedPlaces(fluidOwned_), ownedPlaces(wallsOwned_), weightPerParticle);
+    redistributeParticles(true, true);
 }
 
 template <int D>
@@ -126,19 +145,25 @@ void DistributedSystem<D>::numberByCell(ParticleSet<D>& fluid) const {
 
 template <int D>
 void DistributedSystem<D>::redistribute(bool sortByCell) {
+    redistributeParticles(sortByCell, wallsMove_);
+}
+
+template <int D>
+void DistributedSystem<D>::redistributeParticles(bool sortByCell, bool walls) {
     ParticleSet<D>& fluid = system_.fluid;
     fluid.keep(ownedPlaces(fluidOwned_));
     migrateParticles(ranks_, fluid, boxes_);
     if (sortByCell) numberByCell(fluid);
     fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
     positionsAtRedistribution_ = fluid.position;
-    if (!wallsMove_) return;
-    // Moving walls go where the fluid goes; the patches' ranges follow.
-    ParticleSet<D> walls = system_.walls;
-    walls.keep(ownedPlaces(wallsOwned_));
-    migrateParticles(ranks_, walls, boxes_);
-    wallHalos_.emplace(shareWithNeighbours(walls, wallsOwned_));
-    system_.adoptParticles(std::move(system_.fluid), std::move(walls));
+    if (!walls) return;
+    // Moving walls go where the fluid goes (and every wall after a repartition); the patches'
+    // ranges follow.
+    ParticleSet<D> wallSet = system_.walls;
+    wallSet.keep(ownedPlaces(wallsOwned_));
+    migrateParticles(ranks_, wallSet, boxes_);
+    wallHalos_.emplace(shareWithNeighbours(wallSet, wallsOwned_));
+    system_.adoptParticles(std::move(system_.fluid), std::move(wallSet));
     wallPositionsAtRedistribution_ = system_.walls.position;
 }
 
@@ -177,16 +202,26 @@ ParticleSet<D> DistributedSystem<D>::selected(const ParticleSet<D>& set, const s
 }
 
 template <int D>
+template <class Exchange>
+void DistributedSystem<D>::timed(Exchange&& exchange) {
+    const auto start = std::chrono::steady_clock::now();
+    exchange();
+    exchangeSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <int D>
 void DistributedSystem<D>::refreshShifted() {
-    ParticleSet<D>& fluid = system_.fluid;
-    if (system_.continuity()) fluidHalos_->refresh(fluid, fields::density);
-    fluidHalos_->refreshPositions(fluid);
+    timed([this] {
+        ParticleSet<D>& fluid = system_.fluid;
+        if (system_.continuity()) fluidHalos_->refresh(fluid, fields::density);
+        fluidHalos_->refreshPositions(fluid);
+    });
 }
 
 template <int D>
 void DistributedSystem<D>::refreshWithinEvaluations() {
     FluidSystem<D>& system = system_;
-    system.afterSummationDensity = [this] { fluidHalos_->refresh(system_.fluid, fields::density); };
+    system.afterSummationDensity = [this] { timed([this] { fluidHalos_->refresh(system_.fluid, fields::density); }); };
     // Only a wall state set from the fluid (dummy particles) differs on a copy: one that is
     // integrated (dynamic boundary) advances as its owner's, and wall-force models set none.
     const bool wallStateFromFluid = std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) {
@@ -194,19 +229,30 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
     });
     if (wallStateFromFluid)
         system.afterWallUpdate = [this] {
-            ParticleSet<D>& walls = system_.walls;
-            if (walls.has(fields::viscousVelocity))
-                wallHalos_->refresh(walls, fields::pressure, fields::density, fields::viscousVelocity);
-            else
-                wallHalos_->refresh(walls, fields::pressure, fields::density);
+            timed([this] {
+                ParticleSet<D>& walls = system_.walls;
+                if (walls.has(fields::viscousVelocity))
+                    wallHalos_->refresh(walls, fields::pressure, fields::density, fields::viscousVelocity);
+                else
+                    wallHalos_->refresh(walls, fields::pressure, fields::density);
+            });
         };
+    if (std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.surfaceAlongCurve; }))
+        system.afterWallMotion = [this] { timed([this] { wallHalos_->refresh(system_.walls, fields::normal, fields::spacing, fields::area); }); };
     system.largestOverRanks = [this](double value) { return ranks_.maxOverRanks(value); };
+    // The copies' own rates are replaced by their owners', unless a wall-force model reads them
+    // first (the deficiency correction samples the uncorrected acceleration around its walls).
+    const bool copiesRatesRead =
+        std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.model->needsUncorrectedAcceleration(); });
+    if (!copiesRatesRead) system.ratesWanted = &fluidOwned_;
     system.afterRates = [this] {
-        if (system_.continuity())
-            fluidHalos_->refresh(system_.fluid, fields::acceleration, fields::densityRate);
-        else
-            fluidHalos_->refresh(system_.fluid, fields::acceleration);
-        if (system_.wallDensityEvolves()) wallHalos_->refresh(system_.walls, fields::densityRate);
+        timed([this] {
+            if (system_.continuity())
+                fluidHalos_->refresh(system_.fluid, fields::acceleration, fields::densityRate);
+            else
+                fluidHalos_->refresh(system_.fluid, fields::acceleration);
+            if (system_.wallDensityEvolves()) wallHalos_->refresh(system_.walls, fields::densityRate);
+        });
     };
 }
 

@@ -13,7 +13,9 @@
 // Between two redistributions the copies are advanced by the integrator like their owners, with
 // their owners' rates (refreshed at the end of each evaluation), so they stay equal to them
 // without resending the state; the copies' summed density and wall state are refreshed where
-// they are computed. A copy's own rates miss the neighbours beyond the halo and are never used.
+// they are computed. A copy's own rates miss the neighbours beyond the halo and are never used:
+// the pair loop skips the pairs of two copies (FluidSystem::ratesWanted) unless a model reads
+// them within the evaluation.
 #pragma once
 
 #include "parallel/Communicator.hpp"
@@ -49,6 +51,14 @@ public:
     // (new order numbers; walls keep theirs).
     void redistribute(bool sortByCell);
 
+    // Collective. New boxes, each owned particle weighing weightPerParticle (a wall
+    // wallWeight times that): a rank passes its measured cost per particle, so that the next
+    // boxes even out the time, not the count. Then every particle to its new owner, sorted by
+    // cell: call where the serial run sorts.
+    void repartition(double weightPerParticle);
+    // What this rank's owned particles weigh in the partition at 1 per fluid particle.
+    double ownedWeight() const { return static_cast<double>(ownedFluidCount()) + wallWeight_ * static_cast<double>(ownedWallCount()); }
+
     // Collective. After FluidSystem::shiftParticles: the owners' shifted positions (and densities)
     // to their copies, which the shift computed from incomplete neighbourhoods.
     void refreshShifted();
@@ -70,10 +80,17 @@ public:
     std::vector<int> neighbourRanks() const;
     std::size_t haloBytesSent() const { return fluidHalos_->bytesSent() + wallHalos_->bytesSent(); }
     std::size_t haloMessagesSent() const { return fluidHalos_->messagesSent() + wallHalos_->messagesSent(); }
+    // The wall time the halo refreshes took so far, waits for the neighbours included (the
+    // redistributions are not counted: the caller times them).
+    double exchangeSeconds() const { return exchangeSeconds_; }
 
     const DomainBoxes<D>& boxes() const { return boxes_; }
 
 private:
+    // Boxes from the particles at the given places (each rank passes its own), fluid weighing
+    // weightPerParticle, walls wallWeight_ times that.
+    void partition(const std::vector<std::uint32_t>& fluid, const std::vector<std::uint32_t>& walls, double weightPerParticle);
+    void redistributeParticles(bool sortByCell, bool walls);
     static std::size_t ownedCount(const std::vector<char>& owned) { return static_cast<std::size_t>(std::count(owned.begin(), owned.end(), 1)); }
     static ParticleSet<D> selected(const ParticleSet<D>& set, const std::vector<char>& owned);
     // Copies of the others' particles within the halo width, the set's particles (owned ones
@@ -81,16 +98,20 @@ private:
     HaloExchange<D> shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned);
     void numberByCell(ParticleSet<D>& fluid) const;
     void refreshWithinEvaluations();
+    template <class Exchange>
+    void timed(Exchange&& exchange);
 
     Communicator ranks_;
     FluidSystem<D>& system_;
     double skin_;
     bool wallsMove_;
     double width_;
+    double wallWeight_;
     DomainBoxes<D> boxes_;
     std::vector<char> fluidOwned_, wallsOwned_;  // per particle held: 1 if this rank owns it
     std::optional<HaloExchange<D>> fluidHalos_, wallHalos_;
     std::vector<Vec<D>> positionsAtRedistribution_, wallPositionsAtRedistribution_;
+    double exchangeSeconds_ = 0.0;
 };
 
 }  // namespace sph::parallel

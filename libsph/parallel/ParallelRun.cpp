@@ -12,6 +12,7 @@
 #include "io/PvdCollection.hpp"
 #include "io/ParticleState.hpp"
 #include "io/TimeName.hpp"
+#include "parallel/CostBalance.hpp"
 #include "parallel/DistributedSystem.hpp"
 #include "parallel/GatheredFunctionObjects.hpp"
 #include "parallel/ParticlePieces.hpp"
@@ -19,6 +20,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <chrono>
 #include <limits>
 
 namespace sph::parallel {
@@ -89,6 +91,39 @@ StepAgreement agreeAfterStep(const Communicator& ranks, const CaseSetup<D>& setu
     return agreed;
 }
 
+// The seconds of a rank's own work: the stages of the evaluation and the step, not the waits for
+// the other ranks (halo builds and refreshes, the step agreement) nor rank 0's output.
+double workSeconds(const StageTimers& timers) {
+    double seconds = 0.0;
+    for (const Stage stage : {Stage::Neighbours, Stage::Density, Stage::Boundary, Stage::Forces, Stage::Integrator, Stage::Shifting})
+        seconds += timers.seconds(stage);
+    return seconds;
+}
+
+// Where the time went, every rank's parts side by side as the largest and the smallest over the
+// ranks: the stages of the serial report, then what the decomposition adds: the halo builds
+// (migrations and repartitions), the halo refreshes and the once-per-step agreement, where a rank
+// waits for the slowest.
+template <int D>
+void printTimePerPart(const Communicator& ranks, const FluidSystem<D>& system, const DistributedSystem<D>& shared, double buildSeconds,
+                      double agreementSeconds, double wall) {
+    constexpr std::size_t stages = static_cast<std::size_t>(Stage::Count);
+    constexpr std::array<std::string_view, 3> sharing{"halo builds", "halo refreshes", "step agreement"};
+    std::array<double, stages + sharing.size()> largest{}, smallest{};
+    for (std::size_t s = 0; s < stages; ++s) largest[s] = system.timers.seconds(static_cast<Stage>(s));
+    largest[stages] = buildSeconds;
+    largest[stages + 1] = shared.exchangeSeconds();
+    largest[stages + 2] = agreementSeconds;
+    for (std::size_t s = 0; s < largest.size(); ++s) smallest[s] = -largest[s];
+    ranks.maxOverRanks(largest);
+    ranks.maxOverRanks(smallest);
+    fmt::print("Time per part, largest and smallest over the ranks:\n");
+    for (std::size_t s = 0; s < largest.size(); ++s) {
+        const std::string_view name = s < stages ? stageNames[s] : sharing[s - stages];
+        fmt::print("    {:<20} {:8.3f} s  {:5.1f} %   {:8.3f} s\n", name, largest[s], wall > 0.0 ? 100.0 * largest[s] / wall : 0.0, -smallest[s]);
+    }
+}
+
 template <int D>
 void requireSupported(const CaseSetup<D>& setup, RunMode mode) {
     std::optional<std::string> missing = notYetOnSeveralRanks(*setup.system);
@@ -114,7 +149,8 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
 
 template <int D>
 void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
-              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, GatheredFunctionObjects<D>& functionObjects) {
+              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, GatheredFunctionObjects<D>& functionObjects,
+              double balanceThreshold) {
     FluidSystem<D>& system = *setup.system;
     TimeIntegrator<D>& integrator = *setup.integrator;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
@@ -148,17 +184,33 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     for (const Patch<D>& patch : system.patches)
         if (patch.motion) patch.motion->checkCovers(setup.header.time, controls.endTime);
     const StopRequest stopRequest;
-    StepAgreement agreed = agreeAfterStep(ranks, setup, shared, false, stopRequest, watcher, controls, functionObjects, t);
+    double agreementSeconds = 0.0;
+    const auto agree = [&](bool blownUp) {
+        const auto begin = std::chrono::steady_clock::now();
+        const StepAgreement agreement = agreeAfterStep(ranks, setup, shared, blownUp, stopRequest, watcher, controls, functionObjects, t);
+        agreementSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        return agreement;
+    };
+    StepAgreement agreed = agree(false);
     Progress progress(t, controls.endTime, fluidParticles);
     double nextWrite = controls.nextWriteAfter(t);
     const long firstStep = step;
+    CostBalance balance(balanceThreshold, step);
+    double buildSeconds = 0.0;
     while (true) {
         const double timeTolerance = 1e-9 * controls.writeInterval;
         if (t >= controls.endTime - timeTolerance) break;
         const bool sortByCell = step % stepsBetweenCellSorts == 0;
         if (sortByCell || agreed.displacement > 0.25 * shared.skin()) {
-            auto timer = system.timers.time(Stage::Neighbours);
-            shared.redistribute(sortByCell);
+            const auto begin = std::chrono::steady_clock::now();
+            const auto repartition = sortByCell ? balance.check(ranks, step, workSeconds(system.timers), shared.ownedWeight()) : std::nullopt;
+            if (repartition) {
+                shared.repartition(repartition->weightPerParticle);
+                fmt::print("Repartitioned at step {}: the slowest rank's work was {:.3f} times the mean\n", step, repartition->imbalance);
+            } else {
+                shared.redistribute(sortByCell);
+            }
+            buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         }
         const double target = std::min(nextWrite, controls.endTime);
         const double dt = t + agreed.nextStep > target - timeTolerance ? target - t : agreed.nextStep;
@@ -177,7 +229,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         } catch (const FatalError& e) {
             blowUp = e.what();
         }
-        agreed = agreeAfterStep(ranks, setup, shared, blowUp.has_value(), stopRequest, watcher, controls, functionObjects, t);
+        agreed = agree(blowUp.has_value());
         if (agreed.blownUp) ranks.stopIfAnyFailed(blowUp);
         if (agreed.displacement > 0.5 * shared.skin())
             throw FatalError(
@@ -210,12 +262,13 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     const double particleSteps = static_cast<double>(step - firstStep) * static_cast<double>(fluidParticles);
     fmt::print("\nEnd at t = {:g}: {} steps, {} fluid particles on {} ranks\n", t, step - firstStep, fluidParticles, ranks.size());
     fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
+    printTimePerPart(ranks, system, shared, buildSeconds, agreementSeconds, wall);
     functionObjects.reportErrorAgainstCost(caseDirectory, setup.header.time, {wall, fluidParticles, step - firstStep, t});
 }
 
 template <int D>
 void runOfDimension(const Communicator& ranks, const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start,
-                    RunMode mode, std::optional<int> threads) {
+                    RunMode mode, std::optional<int> threads, double balanceThreshold) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
     requireSupported(setup, mode);
@@ -240,13 +293,13 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     DistributedSystem<D> shared(ranks, system);
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
-    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects);
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects, balanceThreshold);
 }
 
 }  // namespace
 
 void runCaseInParallel(const Communicator& ranks, const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes,
-                       std::optional<int> threads) {
+                       std::optional<int> threads, double balanceThreshold) {
     const Dictionary controlDict = readControlDict(caseDirectory);
     // Rank 0 alone removes files; the others wait for it, then find the same start.
     together(ranks, [&] {
@@ -255,10 +308,10 @@ void runCaseInParallel(const Communicator& ranks, const std::filesystem::path& c
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
     const int dimension = readStateHeader(stateFile(start.path, "fluid")).dimension;
 #ifdef SPHKIT_HAS_2D
-    if (dimension == 2) return runOfDimension<2>(ranks, caseDirectory, controlDict, start, mode, threads);
+    if (dimension == 2) return runOfDimension<2>(ranks, caseDirectory, controlDict, start, mode, threads, balanceThreshold);
 #endif
 #ifdef SPHKIT_HAS_3D
-    if (dimension == 3) return runOfDimension<3>(ranks, caseDirectory, controlDict, start, mode, threads);
+    if (dimension == 3) return runOfDimension<3>(ranks, caseDirectory, controlDict, start, mode, threads, balanceThreshold);
 #endif
     throw FatalError(fmt::format("error: wcsph -parallel runs the 2D and 3D cases this build compiled, and '{}' is {}D",
                                  stateFile(start.path, "fluid").string(), dimension));

@@ -15,7 +15,8 @@
 // BoundaryModel::reach); continuity or summation density; periodic directions; any kernel,
 // viscosity and density diffusion; particle shifting. Not yet: free bodies, SUNDIALS, other wall
 // models. Anything else stops before the first step, naming what does not run on several
-// ranks yet. Every rank reads the whole start state.
+// ranks yet. Every rank reads the whole start state. The boxes are made again when the ranks'
+// measured work drifts apart (CostBalance).
 #pragma once
 
 #include "driver/Simulation.hpp"
@@ -29,6 +30,6 @@ namespace sph::parallel {
 // Collective. FatalError on every rank for what the serial run rejects, what does not run on
 // several ranks yet, and a blow-up.
 void runCaseInParallel(const Communicator& ranks, const std::filesystem::path& caseDirectory, RunMode mode, bool overwriteLaterTimes,
-                       std::optional<int> threads);
+                       std::optional<int> threads, double balanceThreshold);
 
 }  // namespace sph::parallel

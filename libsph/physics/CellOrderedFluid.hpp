@@ -7,6 +7,7 @@
 
 #include "core/Vector.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace sph {
@@ -21,10 +22,11 @@ struct CellOrderedFluid {
     std::vector<Vec<D>> densityGradient;            // delta-SPH's renormalised gradient
     std::vector<std::vector<Vec<D>>> acceleration;  // per thread
     std::vector<std::vector<double>> densityRate;   // per thread, continuity only
+    std::vector<std::uint8_t> cellWanted;           // per cell, where only some rates are wanted
 
     std::size_t bytes() const {
         std::size_t total = (mass.capacity() + pressureOverDensity2.capacity() + density.capacity() + volume.capacity()) * sizeof(double) +
-                            (velocity.capacity() + densityGradient.capacity()) * sizeof(Vec<D>);
+                            (velocity.capacity() + densityGradient.capacity()) * sizeof(Vec<D>) + cellWanted.capacity();
         for (const auto& a : acceleration) total += a.capacity() * sizeof(Vec<D>);
         for (const auto& r : densityRate) total += r.capacity() * sizeof(double);
         return total;

@@ -60,6 +60,12 @@ public:
         if constexpr (Terms::densityGradient) ordered.densityGradient.resize(n_);
         ordered.acceleration.resize(threads);
         if constexpr (Terms::densityRate) ordered.densityRate.resize(threads);
+        wanted_ = s.ratesWanted ? s.ratesWanted->data() : nullptr;
+        if (wanted_) {
+            ordered.cellWanted.assign(cells_.cellCount(), 0);
+            for (std::size_t k = 0; k < n_; ++k)
+                if (wanted_[cells_.sortedIndex(k)]) ordered.cellWanted[cells_.cellAt(k)] = 1;
+        }
         pair_.in = {ordered.mass.data(), ordered.pressureOverDensity2.data(), ordered.density.data(), ordered.volume.data(),
                     Terms::densityGradient && n_ > 0 ? ordered.densityGradient.data()->data() : nullptr};
     }
@@ -134,6 +140,19 @@ private:
         return stencil_;
     }
 
+    // The same for the pairs: from a cell where no rate is wanted, only the cells where one is
+    // (a pair of two unwanted particles adds nothing anyone uses; every pair with a wanted
+    // particle is still evaluated where and when it was, so the wanted sums do not change).
+    const Stencil& pairStencil(std::size_t k) {
+        if (cells_.cellAt(k) != pairStencilCell_) {
+            pairStencilCell_ = cells_.cellAt(k);
+            const bool everyPair = !wanted_ || ordered_.cellWanted[pairStencilCell_];
+            pairStencil_ =
+                everyPair ? cells_.stencilRanges(cells_.sortedPosition(k)) : cells_.stencilRanges(cells_.sortedPosition(k), ordered_.cellWanted);
+        }
+        return pairStencil_;
+    }
+
     // Lists the neighbours of x in neighbours_; in lanes, with room for what they receive.
     template <bool Wraps>
     std::size_t listNeighbours(const CellLinkedList<D>& list, const Stencil& around, const std::array<double, D>& x, std::size_t first) {
@@ -192,7 +211,7 @@ private:
             std::array<double, D> vk{};
             if constexpr (Terms::readsVelocity)
                 for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
-            const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, k + 1);  // the later neighbours
+            const std::size_t count = listNeighbours<Wraps::value>(cells_, pairStencil(k), xk, k + 1);  // the later neighbours
             // In lanes, what k receives is summed in registers and what each neighbour receives
             // is stored beside it and added after the loop (a scatter inside the loop would keep
             // it from vectorising). The list is padded to whole vectors with k itself at weight 0
@@ -273,7 +292,7 @@ private:
 #pragma omp for schedule(static, chunk)
         for (std::size_t k = 0; k < n_; ++k) {
             const std::size_t i = cells_.sortedIndex(k);
-            if (i >= owned_) continue;
+            if (i >= owned_ || (wanted_ && !wanted_[i])) continue;
             Vec<D> acceleration = bodyForce_;
             double densityRate = 0.0;
             for (std::size_t t = 0; t < team_; ++t) {
@@ -373,6 +392,7 @@ private:
     const Vec<D>* wallVelocity_ = nullptr;
     WallPairFields<D> wall_{};
     double radius_ = 0.0, eta2_ = 0.0;
+    const char* wanted_ = nullptr;  // per particle, where only some rates are wanted
 
     // Each thread's own.
     std::size_t thread_ = 0, team_ = 1;
@@ -382,6 +402,8 @@ private:
     double* densityRates_ = nullptr;
     std::uint32_t stencilCell_ = std::numeric_limits<std::uint32_t>::max();
     Stencil stencil_;
+    std::uint32_t pairStencilCell_ = std::numeric_limits<std::uint32_t>::max();
+    Stencil pairStencil_;
     std::uint32_t wallStencilCell_ = std::numeric_limits<std::uint32_t>::max();
     Stencil wallStencil_;
 };

@@ -123,12 +123,19 @@ public:
     std::vector<Patch<D>> patches;
 
     // Where a decomposed run's halo copies take their owners' values within an evaluation: after
-    // summation density (the fluid's density), after the wall-particle models' update (the
-    // walls' state) and at the end (the rates the integrator advances). Empty in a serial run.
-    std::function<void()> afterSummationDensity, afterWallUpdate, afterRates;
+    // the walls moved (a curve's normals, spacings and areas, which its pieces' ends cannot
+    // compute), after summation density (the fluid's density), after the wall-particle models'
+    // update (the walls' state) and at the end (the rates the integrator advances). Empty in a
+    // serial run.
+    std::function<void()> afterWallMotion, afterSummationDensity, afterWallUpdate, afterRates;
     // The largest of every rank's values, where a pass needs a maximum over all particles (the
     // shifting's bound by the fastest particle). Empty in a serial run.
     std::function<double(double)> largestOverRanks;
+    // Per fluid particle, whether this rank uses the rates it computes: its owned particles, where
+    // the copies take their owners' rates and no model reads a copy's within the evaluation. The
+    // pair loop then skips the pairs of two particles in cells where none is wanted. Null in a
+    // serial run: every particle's.
+    const std::vector<char>* ratesWanted = nullptr;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }

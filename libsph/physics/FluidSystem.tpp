@@ -89,6 +89,8 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
             if (!walls.has(fields::initialSpacing)) walls.add(fields::initialSpacing, 0.0) = walls[fields::spacing];
         }
         walls.add(fields::acceleration, Vec<D>::Zero(), false);
+        for (Patch<D>& patch : patches)
+            patch.surfaceAlongCurve = patch.motion && patch.motion->deforms() && surfaceAlongCurve(walls, patch.begin, patch.end);
     }
     wallCells_.markCellsNearPoints();  // the fluid-wall pass skips the fluid cells with no wall particle near
     wallCells_.build(walls.position, 0, wallParticleEnd_);
@@ -146,7 +148,7 @@ void FluidSystem<D>::moveWalls(double t) {
     auto timer = timers.time(Stage::Boundary);
     for (Patch<D>& patch : patches) {
         if (!patch.motion) continue;
-        moveWallPatch(walls, *patch.motion, patch.begin, patch.end, t);
+        moveWallPatch(walls, *patch.motion, patch.begin, patch.end, t, patch.surfaceAlongCurve);
         if (patch.cells) patch.cells->build(walls.position, patch.begin, patch.end);
     }
     wallCells_.build(walls.position, 0, wallParticleEnd_);
@@ -188,16 +190,21 @@ void FluidSystem<D>::sortFluidByCell() {
 template <int D>
 void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
     if (wallsMove_) moveWalls(t);
+    // The hooks of a decomposed run lie outside the stages' timers: it times its exchanges itself.
+    if (afterWallMotion) afterWallMotion();
     {
         auto timer = timers.time(Stage::Neighbours);
         fluidCells_.build(fluid.position);
     }
+    if (!continuity()) {
+        {
+            auto timer = timers.time(Stage::Density);
+            computeSummationDensity();
+        }
+        if (afterSummationDensity) afterSummationDensity();
+    }
     {
         auto timer = timers.time(Stage::Density);
-        if (!continuity()) {
-            computeSummationDensity();
-            if (afterSummationDensity) afterSummationDensity();
-        }
         computeFluidPressure();
     }
     {
@@ -205,8 +212,8 @@ void FluidSystem<D>::evaluateRates(double t, RateTerms terms) {
         const BoundaryView<D> view = boundaryView(t);
         for (Patch<D>& patch : patches)
             if (!patch.cells) patch.model->updateWalls(view, patch.begin, patch.end);
-        if (afterWallUpdate) afterWallUpdate();
     }
+    if (afterWallUpdate) afterWallUpdate();
     {
         auto timer = timers.time(Stage::Forces);
         computeForces(gravityAt(t), terms);

@@ -18,6 +18,7 @@ struct Patch {
     std::unique_ptr<BoundaryModel<D>> model;
     std::optional<CellLinkedList<D>> cells;  // the patch's particles, for wall-force models
     std::unique_ptr<PatchMotion<D>> motion;  // prescribed motion; none for a fixed patch
+    bool surfaceAlongCurve = false;          // a deforming 2D patch whose normals follow its chords
 };
 
 }  // namespace sph

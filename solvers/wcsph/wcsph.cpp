@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #ifdef SPHKIT_WITH_MPI
+#include "parallel/CostBalance.hpp"
 #include "parallel/ParallelRun.hpp"
 
 #include <mpi.h>
@@ -17,6 +18,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -41,8 +43,11 @@ Options:
                   OMP_NUM_THREADS or the cores)
   -parallel       under mpirun (builds with MPI): share the case among the ranks, each
                   writing its piece of every state (<time>/fluid.pvtu); so far with the native
-                  integrators, fixed dynamicBoundary and dummyParticles walls and no function
-                  objects (doc/userGuide.md)
+                  integrators and dynamicBoundary, dummyParticles or deficiencyCorrection walls,
+                  fixed or moving, without free bodies (doc/userGuide.md)
+  -balance <R>    with -parallel: new boxes at a cell sort when the slowest rank's work since
+                  the last partition passes R times the mean (checked every 100 steps; default
+                  1.1; 0: keep the first partition)
   -help           print this message
 
 Before the first run, generateParticles writes the initial state 0/ from
@@ -54,23 +59,41 @@ shared machine (doc/performance.md).
 See doc/userGuide.md and doc/reliability.md.
 )";
 
-// A whole number of threads from 1 to 4096, or nothing.
-std::optional<int> parseThreadCount(const std::string& text) {
+// The whole of `text` as a number, or nothing.
+template <class Number>
+std::optional<Number> parseNumber(const std::string& text) {
     std::size_t used = 0;
-    int threads = 0;
+    Number value{};
     try {
-        threads = std::stoi(text, &used);
+        if constexpr (std::is_integral_v<Number>)
+            value = std::stoi(text, &used);
+        else
+            value = std::stod(text, &used);
     } catch (const std::exception&) {
         return std::nullopt;
     }
-    if (used != text.size() || threads < 1 || threads > 4096) return std::nullopt;
+    if (used != text.size()) return std::nullopt;
+    return value;
+}
+
+// 0 or a ratio of at least 1, or nothing.
+std::optional<double> parseBalanceThreshold(const std::string& text) {
+    const std::optional<double> threshold = parseNumber<double>(text);
+    if (!threshold || !(*threshold == 0.0 || (*threshold >= 1.0 && *threshold < 1e6))) return std::nullopt;
+    return threshold;
+}
+
+// A whole number of threads from 1 to 4096, or nothing.
+std::optional<int> parseThreadCount(const std::string& text) {
+    const std::optional<int> threads = parseNumber<int>(text);
+    if (!threads || *threads < 1 || *threads > 4096) return std::nullopt;
     return threads;
 }
 
 #ifdef SPHKIT_WITH_MPI
 // Errors of the parallel run are collective (every rank stops with the same message): rank 0
 // prints them, as it prints the log.
-int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool overwrite, std::optional<int> threads) {
+int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool overwrite, std::optional<int> threads, double balanceThreshold) {
     MPI_Init(nullptr, nullptr);
     int status = 0;
     {
@@ -80,7 +103,7 @@ int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool over
         if (status == 0)
             status = sph::exitCodeOf([&] {
                 try {
-                    sph::parallel::runCaseInParallel(ranks, caseDirectory, mode, overwrite, threads);
+                    sph::parallel::runCaseInParallel(ranks, caseDirectory, mode, overwrite, threads, balanceThreshold);
                 } catch (const sph::FatalError&) {
                     if (ranks.rank() == 0) throw;
                     failedQuietly = true;
@@ -102,6 +125,7 @@ int main(int argc, char** argv) {
     bool overwrite = false;
     bool parallel = false;
     std::optional<int> threads;
+    std::optional<double> balanceThreshold;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-help" || arg == "--help" || arg == "-h") {
@@ -138,6 +162,14 @@ int main(int argc, char** argv) {
             }
             continue;
         }
+        if (arg == "-balance" && i + 1 < argc) {
+            balanceThreshold = parseBalanceThreshold(argv[++i]);
+            if (!balanceThreshold) {
+                fmt::print(stderr, "error: -balance takes 0 (keep the first partition) or a ratio of at least 1, found '{}'\n", argv[i]);
+                return 2;
+            }
+            continue;
+        }
         if (arg == "-case" && i + 1 < argc) {
             caseDirectory = argv[++i];
             continue;
@@ -145,9 +177,13 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "error: unknown or incomplete option '{}'\n\n{}", arg, usage);
         return 2;
     }
+    if (balanceThreshold && !parallel) {
+        fmt::print(stderr, "error: -balance applies to a run on several ranks (wcsph -parallel under mpirun)\n");
+        return 2;
+    }
     if (parallel) {
 #ifdef SPHKIT_WITH_MPI
-        return runInParallel(caseDirectory, mode, overwrite, threads);
+        return runInParallel(caseDirectory, mode, overwrite, threads, balanceThreshold.value_or(sph::parallel::CostBalance::defaultThreshold));
 #else
         fmt::print(stderr,
                    "error: -parallel needs a build with MPI (CMake SPHKIT_MPI; packages openmpi-bin libopenmpi-dev libtrilinos-zoltan-dev)\n");

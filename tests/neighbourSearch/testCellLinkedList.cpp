@@ -159,3 +159,35 @@ TEST(CellLinkedList, CellsNearPointsAreThoseWhoseStencilHasOne) {
         }
     }
 }
+
+// The stencil restricted to some cells lists the full stencil's places in those cells, in the
+// same order (the pair loop of a decomposed run relies on the order), periodic or not.
+TEST(CellLinkedList, RestrictedStencilKeepsTheKeptCellsPlacesInOrder) {
+    for (const bool periodicX : {false, true}) {
+        std::mt19937 random(5);
+        std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+        std::vector<sph::Vec<2>> points(3000);
+        for (auto& p : points) p = {coordinate(random), coordinate(random)};
+        sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1, {periodicX, false});
+        cells.build(points);
+        std::vector<std::uint8_t> keep(cells.cellCount());
+        for (std::size_t c = 0; c < keep.size(); ++c) keep[c] = (c * 7 + c / 5) % 3 != 0;  // runs of kept cells, and gaps
+        const auto places = [](const sph::CellLinkedList<2>::StencilRanges& stencil) {
+            std::vector<std::uint32_t> listed;
+            for (const auto& range : stencil)
+                for (std::uint32_t k = range.begin; k < range.end; ++k) listed.push_back(k);
+            return listed;
+        };
+        std::size_t dropped = 0;
+        for (std::size_t q = 0; q < points.size(); q += 37) {
+            std::vector<std::uint32_t> expected;
+            for (const std::uint32_t k : places(cells.stencilRanges(points[q])))
+                if (keep[cells.cellAt(k)])
+                    expected.push_back(k);
+                else
+                    ++dropped;
+            ASSERT_EQ(places(cells.stencilRanges(points[q], keep)), expected) << "point " << q << ", periodic " << periodicX;
+        }
+        EXPECT_GT(dropped, 0u);
+    }
+}

@@ -283,6 +283,10 @@ add("command line", "`wcsph -threads 0`", [], "-threads takes a whole number fro
     arguments=("-threads", "0"), outcome="refused")
 add("command line", "`wcsph -threads two`", [], "-threads takes a whole number from 1 to 4096, found 'two'", tools=("wcsph",),
     arguments=("-threads", "two"), outcome="refused")
+add("command line", "`wcsph -parallel -balance 0.9`", [], "-balance takes 0 (keep the first partition) or a ratio of at least 1, found '0.9'",
+    tools=("wcsph",), arguments=("-parallel", "-balance", "0.9"), outcome="refused")
+add("command line", "`wcsph -balance 1.2` without -parallel", [], "-balance applies to a run on several ranks (wcsph -parallel under mpirun)",
+    tools=("wcsph",), arguments=("-balance", "1.2"), outcome="refused")
 add("command line", "`generateParticles -force`", [], "unknown or incomplete option '-force'", tools=("generateParticles",), arguments=("-force",),
     outcome="refused")
 
