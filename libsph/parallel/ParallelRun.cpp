@@ -19,6 +19,8 @@
 
 #include <fmt/format.h>
 
+#include <sys/resource.h>
+
 #include <array>
 #include <chrono>
 #include <limits>
@@ -103,25 +105,29 @@ double workSeconds(const StageTimers& timers) {
 // Where the time went, every rank's parts side by side as the largest and the smallest over the
 // ranks: the stages of the serial report, then what the decomposition adds: the halo builds
 // (migrations and repartitions), the halo refreshes and the once-per-step agreement, where a rank
-// waits for the slowest.
+// waits for the slowest. Then each rank's peak memory (resident set, as the kernel counts it).
 template <int D>
 void printTimePerPart(const Communicator& ranks, const FluidSystem<D>& system, const DistributedSystem<D>& shared, double buildSeconds,
                       double agreementSeconds, double wall) {
     constexpr std::size_t stages = static_cast<std::size_t>(Stage::Count);
     constexpr std::array<std::string_view, 3> sharing{"halo builds", "halo refreshes", "step agreement"};
-    std::array<double, stages + sharing.size()> largest{}, smallest{};
+    std::array<double, stages + sharing.size() + 1> largest{}, smallest{};
     for (std::size_t s = 0; s < stages; ++s) largest[s] = system.timers.seconds(static_cast<Stage>(s));
     largest[stages] = buildSeconds;
     largest[stages + 1] = shared.exchangeSeconds();
     largest[stages + 2] = agreementSeconds;
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    largest.back() = static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
     for (std::size_t s = 0; s < largest.size(); ++s) smallest[s] = -largest[s];
     ranks.maxOverRanks(largest);
     ranks.maxOverRanks(smallest);
     fmt::print("Time per part, largest and smallest over the ranks:\n");
-    for (std::size_t s = 0; s < largest.size(); ++s) {
+    for (std::size_t s = 0; s + 1 < largest.size(); ++s) {
         const std::string_view name = s < stages ? stageNames[s] : sharing[s - stages];
         fmt::print("    {:<20} {:8.3f} s  {:5.1f} %   {:8.3f} s\n", name, largest[s], wall > 0.0 ? 100.0 * largest[s] / wall : 0.0, -smallest[s]);
     }
+    fmt::print("Peak memory of a rank: largest {:.1f} MiB, smallest {:.1f} MiB\n", largest.back(), -smallest.back());
 }
 
 template <int D>
