@@ -5,6 +5,7 @@
 #include "core/FatalError.hpp"
 #include "core/ParticleSet.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/CostBalance.hpp"
 #include "parallel/HaloExchange.hpp"
 #include "parallel/ParticleMigration.hpp"
 #include "parallel/RcbPartition.hpp"
@@ -179,6 +180,31 @@ TEST(Decomposition, ARankThatOwnsNoParticleTakesPartInEveryStep) {
     EXPECT_EQ(wrongFields(set, 0, set.size()), 0);
     if (ranks.size() > 2) {
         EXPECT_GE(empty, 1);
+    }
+}
+
+// Rank r reports r + 1 seconds of work on particles weighing 10: on P ranks the slowest is
+// 2P / (P + 1) times the mean, and r's seconds per unit weight against the mean's are
+// ((r + 1) / 10) / (P (P + 1) / 2 / (10 P)) = 2 (r + 1) / (P + 1). Checks wait 100 steps, and the
+// seconds count from the last check.
+TEST(Decomposition, CostBalanceWeighsEachRankByItsMeasuredCost) {
+    const Communicator ranks;
+    const double P = ranks.size(), r = ranks.rank();
+    CostBalance balance(1.1, 0);
+    const auto early = balance.check(ranks, 99, r + 1.0, 10.0);
+    const auto first = balance.check(ranks, 100, r + 1.0, 10.0);
+    // The next 100 steps: every rank 7 s more, balanced.
+    const auto balanced = balance.check(ranks, 200, r + 8.0, 10.0);
+    const auto never = CostBalance(0.0, 0).check(ranks, 100, r + 1.0, 10.0);
+    EXPECT_FALSE(early);
+    EXPECT_FALSE(balanced);
+    EXPECT_FALSE(never);
+    if (ranks.size() == 1) {
+        EXPECT_FALSE(first);
+    } else {
+        ASSERT_TRUE(first);
+        EXPECT_DOUBLE_EQ(first->imbalance, 2.0 * P / (P + 1.0));
+        EXPECT_DOUBLE_EQ(first->weightPerParticle, 2.0 * (r + 1.0) / (P + 1.0));
     }
 }
 
