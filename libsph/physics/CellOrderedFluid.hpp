@@ -22,13 +22,19 @@ struct CellOrderedFluid {
     std::vector<Vec<D>> densityGradient;            // delta-SPH's renormalised gradient
     std::vector<std::vector<Vec<D>>> acceleration;  // per thread
     std::vector<std::vector<double>> densityRate;   // per thread, continuity only
-    std::vector<std::uint8_t> cellWanted;           // per cell, where only some rates are wanted
+    std::vector<std::vector<double>> gradientSums;  // per thread, delta-SPH's gradient only
+    // Per thread, delta-SPH only: each of its particles' count of later neighbours, then their
+    // places, listed by the gradient pass for the pair loop.
+    std::vector<std::vector<std::uint32_t>> neighbourLists;
+    std::vector<std::uint8_t> cellWanted;  // per cell, where only some rates are wanted
 
     std::size_t bytes() const {
         std::size_t total = (mass.capacity() + pressureOverDensity2.capacity() + density.capacity() + volume.capacity()) * sizeof(double) +
                             (velocity.capacity() + densityGradient.capacity()) * sizeof(Vec<D>) + cellWanted.capacity();
         for (const auto& a : acceleration) total += a.capacity() * sizeof(Vec<D>);
         for (const auto& r : densityRate) total += r.capacity() * sizeof(double);
+        for (const auto& g : gradientSums) total += g.capacity() * sizeof(double);
+        for (const auto& l : neighbourLists) total += l.capacity() * sizeof(std::uint32_t);
         return total;
     }
 };

@@ -12,6 +12,7 @@
 
 #include <Eigen/LU>  // delta-SPH's renormalisation matrix
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -32,6 +33,9 @@ public:
     // lanes (3D)").
     static constexpr std::size_t lanes = D == 3 ? 4 : 1;
     static constexpr std::size_t chunk = 256;
+    // What delta-SPH's gradient sums per particle: the moment matrix, then the density differences.
+    using Moment = Eigen::Matrix<double, D, D>;
+    static constexpr int gradientSumCount = D * D + D;
 
     // Sizes the cell-ordered copies and accumulators; call before the parallel region.
     FluidRatesLoop(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, Viscosity viscosity, Diffusion diffusion, const Vec<D>& gravity)
@@ -57,7 +61,11 @@ public:
         if constexpr (Terms::readsVelocity) ordered.velocity.resize(n_);
         if constexpr (Terms::readsDensity) ordered.density.resize(n_);
         if constexpr (Terms::diffuses) ordered.volume.resize(n_);
-        if constexpr (Terms::densityGradient) ordered.densityGradient.resize(n_);
+        if constexpr (Terms::densityGradient) {
+            ordered.densityGradient.resize(n_);
+            ordered.gradientSums.resize(threads);
+            ordered.neighbourLists.resize(threads);
+        }
         ordered.acceleration.resize(threads);
         if constexpr (Terms::densityRate) ordered.densityRate.resize(threads);
         wanted_ = s.ratesWanted ? s.ratesWanted->data() : nullptr;
@@ -112,6 +120,10 @@ private:
             ordered_.densityRate[thread_].assign(n_, 0.0);
             densityRates_ = ordered_.densityRate[thread_].data();
         }
+        if constexpr (Terms::densityGradient) {
+            ordered_.gradientSums[thread_].assign(n_ * gradientSumCount, 0.0);
+            gradientSums_ = ordered_.gradientSums[thread_].data();
+        }
     }
 
     void copyIntoCellOrder() {
@@ -162,32 +174,72 @@ private:
         return count;
     }
 
+    // Takes a kept list into neighbours_, as listNeighbours would have listed it.
+    void reuseNeighbours(const std::uint32_t* list, std::size_t count) {
+        if (neighbours_.size() < count + lanes) neighbours_.resize(2 * (count + lanes));
+        std::copy(list, list + count, neighbours_.begin());
+        if constexpr (lanes > 1)
+            if (toNeighbour_.size() < neighbours_.size() * (D + 1)) toNeighbour_.resize(neighbours_.size() * (D + 1));
+    }
+
     std::array<double, D> sortedPosition(std::size_t k) const {
         std::array<double, D> x;
         for (int d = 0; d < D; ++d) x[d] = cells_.sortedPosition(k)[d];
         return x;
     }
 
-    // The renormalised density gradients (Antuono2010.hpp), before any pair reads them.
+    // The renormalised density gradients (Antuono2010.hpp), before any pair reads them: the sums
+    // of L_i^-1 and of the density differences from each pair once, k with its later neighbours,
+    // into this thread's accumulator (a pair's terms are the same for both particles but for the
+    // other's volume), then per particle the threads' sums added and the gradient solved. Every held pair counts, copies' included: a halo copy next
+    // to an owned particle needs its own gradient whole. The lists are kept for the pair loop,
+    // whose thread takes the same particles in the same order (the same static schedule), so that
+    // the neighbours are searched once: the search is most of this pass's cost. Where only some
+    // rates are wanted the kept lists hold copy-copy pairs too, which add only to copies.
     template <class Wraps>
     void densityGradients(Wraps) {
         const double* const volume = ordered_.volume.data();
         const double* const density = ordered_.density.data();
-        double* const gradients = ordered_.densityGradient.data()->data();
+        const double* const xs = n_ > 0 ? cells_.sortedPosition(0).data() : nullptr;
+        double* const sums = gradientSums_;
+        std::vector<std::uint32_t>& kept = ordered_.neighbourLists[thread_];
+        kept.clear();
         const Kernel kernel = kernel_;
 #pragma omp for schedule(static, chunk)
         for (std::size_t k = 0; k < n_; ++k) {
             const std::array<double, D> xk = sortedPosition(k);
-            const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, 0);
-            Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
-            Vec<D> sum = Vec<D>::Zero();
+            const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, k + 1);
+            kept.push_back(static_cast<std::uint32_t>(count));
+            kept.insert(kept.end(), neighbours_.begin(), neighbours_.begin() + static_cast<std::ptrdiff_t>(count));
+            const double volumeK = volume[k], densityK = density[k];
+            // What a pair adds to either particle, but for the other's volume: -F r (x) r to the
+            // moment, F (rho_l - rho_k) r to the differences' sum (whole matrices: packed vectors).
+            Moment momentK = Moment::Zero();
+            Vec<D> differencesK = Vec<D>::Zero();
             for (std::size_t q = 0; q < count; ++q) {
                 const std::size_t l = neighbours_[q];
                 Vec<D> r;
-                for (int d = 0; d < D; ++d) r[d] = cells_.template separation<Wraps::value>(xk[d] - cells_.sortedPosition(l)[d], d);
-                const double VF = volume[l] * kernel.gradientFactor(r.norm());
-                moment.noalias() -= (VF * r) * r.transpose();
-                sum += ((density[l] - density[k]) * VF) * r;
+                for (int d = 0; d < D; ++d) r[d] = cells_.template separation<Wraps::value>(xk[d] - xs[l * D + d], d);
+                const Vec<D> Fr = kernel.gradientFactor(r.norm()) * r;
+                const Vec<D> differenceFr = (density[l] - densityK) * Fr;
+                momentK.noalias() -= (volume[l] * Fr) * r.transpose();
+                differencesK += volume[l] * differenceFr;
+                double* const toL = sums + l * gradientSumCount;
+                Eigen::Map<Moment>(toL).noalias() -= (volumeK * Fr) * r.transpose();
+                Eigen::Map<Vec<D>>(toL + D * D) += volumeK * differenceFr;
+            }
+            Eigen::Map<Moment>(sums + k * gradientSumCount) += momentK;
+            Eigen::Map<Vec<D>>(sums + k * gradientSumCount + D * D) += differencesK;
+        }  // implicit barrier: every pair is in
+        double* const gradients = ordered_.densityGradient.data()->data();
+#pragma omp for schedule(static, chunk)
+        for (std::size_t k = 0; k < n_; ++k) {
+            Moment moment = Moment::Zero();
+            Vec<D> sum = Vec<D>::Zero();
+            for (std::size_t t = 0; t < team_; ++t) {
+                const double* const ofThread = ordered_.gradientSums[t].data() + k * gradientSumCount;
+                moment += Eigen::Map<const Moment>(ofThread);
+                sum += Eigen::Map<const Vec<D>>(ofThread + D * D);
             }
             const Vec<D> gradient = moment.determinant() > 0.1 ? Vec<D>(moment.inverse() * sum) : sum;
             for (int d = 0; d < D; ++d) gradients[k * D + d] = gradient[d];
@@ -205,13 +257,21 @@ private:
         const double* const vs = Terms::readsVelocity && n_ > 0 ? ordered_.velocity[0].data() : nullptr;
         double* const as = accelerations_;
         [[maybe_unused]] double* const drhoK = densityRates_;
+        [[maybe_unused]] const std::uint32_t* kept = Terms::densityGradient ? ordered_.neighbourLists[thread_].data() : nullptr;
 #pragma omp for schedule(static, chunk) nowait
         for (std::size_t k = 0; k < n_; ++k) {
             const std::array<double, D> xk = sortedPosition(k);
             std::array<double, D> vk{};
             if constexpr (Terms::readsVelocity)
                 for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
-            const std::size_t count = listNeighbours<Wraps::value>(cells_, pairStencil(k), xk, k + 1);  // the later neighbours
+            std::size_t count;  // the later neighbours
+            if constexpr (Terms::densityGradient) {
+                count = *kept;
+                reuseNeighbours(kept + 1, count);
+                kept += 1 + count;
+            } else {
+                count = listNeighbours<Wraps::value>(cells_, pairStencil(k), xk, k + 1);
+            }
             // In lanes, what k receives is summed in registers and what each neighbour receives
             // is stored beside it and added after the loop (a scatter inside the loop would keep
             // it from vectorising). The list is padded to whole vectors with k itself at weight 0
@@ -400,6 +460,7 @@ private:
     std::vector<double> toNeighbour_, distance2_;
     double* accelerations_ = nullptr;  // this thread's accumulator, D doubles per place
     double* densityRates_ = nullptr;
+    double* gradientSums_ = nullptr;  // delta-SPH's, gradientSumCount doubles per place
     std::uint32_t stencilCell_ = std::numeric_limits<std::uint32_t>::max();
     Stencil stencil_;
     std::uint32_t pairStencilCell_ = std::numeric_limits<std::uint32_t>::max();

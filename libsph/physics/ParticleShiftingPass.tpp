@@ -74,14 +74,17 @@ struct ShiftingViews {
 };
 
 // Pass 1's sums, per thread and in cell order: each fluid pair is visited once and adds to both
-// its particles, as the force loop does (CellOrderedFluid.hpp). Inside the parallel region.
+// its particles, as the force loop does (CellOrderedFluid.hpp). What k receives is summed in
+// registers and added once; a pair's terms are the same for both particles but for the other's
+// volume and the gradient's sign. Inside the parallel region.
 template <int D, class Kernel, class Law, class Wraps>
 void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, const Law& law, std::vector<typename ParticleShiftingScratch<D>::Sums>& mine,
                       Wraps) {
     using Matrix = Eigen::Matrix<double, D, D>;
     const auto& cells = in.cells;
     const std::size_t places = cells.pointCount();
-    const std::vector<double>& volume = in.scratch.volume;
+    const double* const volume = in.scratch.volume.data();
+    const double* const density = in.scratch.density.data();
     std::vector<std::uint32_t> neighbours(64);
     std::vector<double> unusedScratch;
     auto stencilCell = std::numeric_limits<std::uint32_t>::max();
@@ -95,27 +98,33 @@ void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, const La
         }
         std::array<double, D> xk;
         for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
-        const std::size_t i = cells.sortedIndex(k);
         const std::size_t count = cells.template listWithin<1, Wraps::value>(stencil, xk, in.radius * in.radius, k + 1, neighbours, unusedScratch);
-        auto& atK = mine[k];
+        const double volumeK = volume[k], densityK = density[k];
+        Matrix momentK = Matrix::Zero();
+        Vec<D> gradientK = Vec<D>::Zero(), lawK = Vec<D>::Zero(), differencesK = Vec<D>::Zero();
         for (std::size_t q = 0; q < count; ++q) {
-            const std::size_t l = neighbours[q], j = cells.sortedIndex(l);
+            const std::size_t l = neighbours[q];
             Vec<D> r;
             for (int d = 0; d < D; ++d) r[d] = cells.template separation<Wraps::value>(xk[d] - xs[l * D + d], d);
             const double distance = r.norm();
             const Vec<D> Fr = kernel.gradientFactor(distance) * r;
-            const double weight = law.pairWeight(kernel.value(distance) * in.inverseWdx), densityDifference = in.rho[j] - in.rho[i];
-            const Matrix outer = Fr * r.transpose();
+            const Vec<D> weightFr = law.pairWeight(kernel.value(distance) * in.inverseWdx) * Fr;
+            const Vec<D> differenceFr = (density[l] - densityK) * Fr;
+            momentK.noalias() -= (volume[l] * Fr) * r.transpose();
+            gradientK += volume[l] * Fr;
+            lawK += volume[l] * weightFr;
+            differencesK += volume[l] * differenceFr;
             auto& atL = mine[l];
-            atK.moment.noalias() -= volume[j] * outer;
-            atL.moment.noalias() -= volume[i] * outer;
-            atK.gradient += volume[j] * Fr;
-            atL.gradient -= volume[i] * Fr;
-            atK.law += (weight * volume[j]) * Fr;
-            atL.law -= (weight * volume[i]) * Fr;
-            atK.densityDifferences += (densityDifference * volume[j]) * Fr;
-            atL.densityDifferences += (densityDifference * volume[i]) * Fr;
+            atL.moment.noalias() -= (volumeK * Fr) * r.transpose();
+            atL.gradient -= volumeK * Fr;
+            atL.law -= volumeK * weightFr;
+            atL.densityDifferences += volumeK * differenceFr;
         }
+        auto& atK = mine[k];
+        atK.moment += momentK;
+        atK.gradient += gradientK;
+        atK.law += lawK;
+        atK.densityDifferences += differencesK;
     }  // implicit barrier: every pair is in
 }
 
@@ -262,6 +271,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 // Its table depends on the kernel alone: built at the first step that needs it.
                 if (oneLayerWalls && !scratch.outsideFraction) scratch.outsideFraction.emplace(kernel);
                 scratch.volume.resize(cells.pointCount());
+                scratch.density.resize(cells.pointCount());
                 scratch.outward.resize(n);
                 scratch.law.resize(n);
                 scratch.densityGradient.resize(n);
@@ -289,7 +299,11 @@ void FluidSystem<D>::shiftParticles(double dt) {
                                           this->fluid[fields::shiftingVelocity].data(),
                                           this->fluid[fields::freeSurfaceLambda].data()};
 #pragma omp parallel for schedule(static)
-                for (std::size_t j = 0; j < cells.pointCount(); ++j) in.scratch.volume[j] = in.m[j] / in.rho[j];
+                for (std::size_t l = 0; l < cells.pointCount(); ++l) {
+                    const std::size_t j = cells.sortedIndex(l);
+                    in.scratch.volume[l] = in.m[j] / in.rho[j];
+                    in.scratch.density[l] = in.rho[j];
+                }
                 auto& sumsOfThread = in.scratch.sumsOfThread;
                 sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel

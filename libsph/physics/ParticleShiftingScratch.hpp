@@ -22,7 +22,7 @@ struct ParticleShiftingScratch {
         Vec<D> gradient = Vec<D>::Zero(), law = Vec<D>::Zero(), densityDifferences = Vec<D>::Zero();
     };
     std::vector<std::vector<Sums>> sumsOfThread;  // in cell order
-    std::vector<double> volume;
+    std::vector<double> volume, density;          // in cell order
     std::vector<Vec<D>> outward, law, surfaceNormal, densityGradient;
     std::vector<char> nearWall;
     std::optional<KernelOutsideFraction<D>> outsideFraction;  // one-layer walls only

@@ -116,6 +116,15 @@ TEST(ShiftingSun2017, DisplacedParticleAgainstTheSumWrittenOut) {
     EXPECT_LT((s->fluid.position[moved] - (x[moved] + dt * expected)).norm(), 1e-15);
 }
 
+TEST(ShiftingSun2017, PairWeightTakesThePowerOfAnyExponent) {
+    // Even and odd exponents (the power is taken by squaring), against std::pow.
+    for (int n = 0; n <= 7; ++n) {
+        const ShiftingSun2017 law(0.2, n, h);
+        for (const double w : {0.0, 0.37, 1.0, 1.6})
+            EXPECT_NEAR(law.pairWeight(w), 1.0 + 0.2 * std::pow(w, n), 1e-15 * (1.0 + 0.2 * std::pow(w, n))) << "n " << n << ", w " << w;
+    }
+}
+
 TEST(ParticleShifting, EvensOutARandomLattice) {
     // The spread of the kernel sum sum_j V_j W_ij (1 on a lattice) over a disordered periodic
     // lattice, before and after 200 shifts of dt = 0.2 h / c0 at U = 1.
