@@ -231,7 +231,7 @@ private:
             Eigen::Map<Moment>(sums + k * gradientSumCount) += momentK;
             Eigen::Map<Vec<D>>(sums + k * gradientSumCount + D * D) += differencesK;
         }  // implicit barrier: every pair is in
-        double* const gradients = ordered_.densityGradient.data()->data();
+        double* const gradients = n_ > 0 ? ordered_.densityGradient.data()->data() : nullptr;
 #pragma omp for schedule(static, chunk)
         for (std::size_t k = 0; k < n_; ++k) {
             Moment moment = Moment::Zero();
