@@ -19,8 +19,7 @@ struct ShiftingSun2017 {
     ShiftingSun2017(double R, int n, double h) : R(R), n(n), h(h) {}
 
     // 1 + R (W_ij / W(dx))^n: pairs closer than dx push harder (Monaghan's tensile term). The
-    // power by squaring: n = 4 in two multiplications rather than a chain of four, which was a
-    // fifth of the pass's time.
+    // power by squaring: n = 4 in two dependent multiplications rather than a chain of four.
     double pairWeight(double wOverWdx) const {
         double power = 1.0;
         for (int e = n; e > 0; e >>= 1, wOverWdx *= wOverWdx)

@@ -191,11 +191,12 @@ private:
     // The renormalised density gradients (Antuono2010.hpp), before any pair reads them: the sums
     // of L_i^-1 and of the density differences from each pair once, k with its later neighbours,
     // into this thread's accumulator (a pair's terms are the same for both particles but for the
-    // other's volume), then per particle the threads' sums added and the gradient solved. Every held pair counts, copies' included: a halo copy next
-    // to an owned particle needs its own gradient whole. The lists are kept for the pair loop,
-    // whose thread takes the same particles in the same order (the same static schedule), so that
-    // the neighbours are searched once: the search is most of this pass's cost. Where only some
-    // rates are wanted the kept lists hold copy-copy pairs too, which add only to copies.
+    // other's volume), then per particle the threads' sums added and the gradient solved. Every
+    // held pair counts, copies' included: a halo copy next to an owned particle needs its own
+    // gradient whole. The lists are kept for the pair loop, whose thread takes the same particles
+    // in the same order (the same static schedule), so that the cells are searched once. Where
+    // only some rates are wanted the kept lists hold copy-copy pairs too, which add only to copies
+    // (work the pair loop skips without delta-SPH).
     template <class Wraps>
     void densityGradients(Wraps) {
         const double* const volume = ordered_.volume.data();
