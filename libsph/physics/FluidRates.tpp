@@ -174,12 +174,20 @@ private:
         return count;
     }
 
-    // Takes a kept list into neighbours_, as listNeighbours would have listed it.
-    void reuseNeighbours(const std::uint32_t* list, std::size_t count) {
+    // A kept list of sorted place k as listNeighbours would have listed it: read in place, or,
+    // where lanes need room to pad it or k's cell is one where no rate is wanted, taken into
+    // neighbours_, in the second case only the neighbours in cells where one is (as pairStencil).
+    const std::uint32_t* keptNeighbours(const std::uint32_t* list, std::size_t& count, std::size_t k) {
+        const bool everyPair = !wanted_ || ordered_.cellWanted[cells_.cellAt(k)];
+        if (everyPair && lanes == 1) return list;
         if (neighbours_.size() < count + lanes) neighbours_.resize(2 * (count + lanes));
-        std::copy(list, list + count, neighbours_.begin());
+        std::size_t taken = 0;
+        for (std::size_t q = 0; q < count; ++q)
+            if (everyPair || ordered_.cellWanted[cells_.cellAt(list[q])]) neighbours_[taken++] = list[q];
+        count = taken;
         if constexpr (lanes > 1)
             if (toNeighbour_.size() < neighbours_.size() * (D + 1)) toNeighbour_.resize(neighbours_.size() * (D + 1));
+        return neighbours_.data();
     }
 
     std::array<double, D> sortedPosition(std::size_t k) const {
@@ -195,8 +203,8 @@ private:
     // held pair counts, copies' included: a halo copy next to an owned particle needs its own
     // gradient whole. The lists are kept for the pair loop, whose thread takes the same particles
     // in the same order (the same static schedule), so that the cells are searched once. Where
-    // only some rates are wanted the kept lists hold copy-copy pairs too, which add only to copies
-    // (work the pair loop skips without delta-SPH).
+    // only some rates are wanted the kept lists hold copy-copy pairs too, which the pair loop
+    // drops as it reads them (keptNeighbours).
     template <class Wraps>
     void densityGradients(Wraps) {
         const double* const volume = ordered_.volume.data();
@@ -266,12 +274,15 @@ private:
             if constexpr (Terms::readsVelocity)
                 for (int d = 0; d < D; ++d) vk[d] = vs[k * D + d];
             std::size_t count;  // the later neighbours
+            const std::uint32_t* listed;
             if constexpr (Terms::densityGradient) {
                 count = *kept;
-                reuseNeighbours(kept + 1, count);
-                kept += 1 + count;
+                const std::uint32_t* const list = kept + 1;
+                kept = list + count;
+                listed = keptNeighbours(list, count, k);
             } else {
                 count = listNeighbours<Wraps::value>(cells_, pairStencil(k), xk, k + 1);
+                listed = neighbours_.data();  // after the listing, which may grow it
             }
             // In lanes, what k receives is summed in registers and what each neighbour receives
             // is stored beside it and added after the loop (a scatter inside the loop would keep
@@ -279,8 +290,7 @@ private:
             // (every term is proportional to F, which is finite at r = 0), so that no pair is left
             // to a scalar remainder loop.
             const std::size_t padded = (count + lanes - 1) / lanes * lanes;
-            for (std::size_t q = count; q < padded; ++q) neighbours_[q] = static_cast<std::uint32_t>(k);
-            const std::uint32_t* listed = neighbours_.data();
+            for (std::size_t q = count; q < padded; ++q) neighbours_[q] = static_cast<std::uint32_t>(k);  // lanes: listed is neighbours_
             [[maybe_unused]] const std::size_t stride = neighbours_.size();
             [[maybe_unused]] double* const toL = toNeighbour_.data();  // D components of acceleration, then the density rate
             const PairParticle<D> particleK = pair.particle(k);
