@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sph {
@@ -61,6 +62,9 @@ void ModifiedDynamicBoundaryEnglish2022<D>::addFields(const BoundaryView<D>& vie
         throw FatalError(
             "error: modifiedDynamicBoundary needs the wall field 'layer' (each wall particle's layer behind the surface), "
             "which the wall particle file lacks; regenerate it with generateParticles");
+    const int* layer = view.walls[fields::layer].data();
+    const double* spacing = view.walls[fields::spacing].data();
+    for (std::size_t w = 0; w < view.walls.size(); ++w) deepest_ = std::max(deepest_, (layer[w] + firstLayerOffset_) * spacing[w]);
 }
 
 template <int D>

@@ -35,11 +35,15 @@ public:
     std::string describe() const override;
     // The ghost nodes see the fluid, but the fluid near the wall needs the support filled.
     int minimumLayers(double support, double dx) const override { return layersFillingSupport(support, dx); }
+    // Fluid i reads wall w within the support, whose density reads the fluid within the support
+    // of its ghost node, twice w's depth in front of it.
+    double reach(double support) const override { return 2.0 * deepest_ + support; }
     void addFields(const BoundaryView<D>& view) override;
     void updateWalls(const BoundaryView<D>& view, std::size_t begin, std::size_t end) override;
 
 private:
     double firstLayerOffset_;  // the wall surface's distance in front of the first layer, in spacings
+    double deepest_ = 0.0;     // the largest depth of a wall particle, any patch's (a bound on this one's)
 };
 
 }  // namespace sph

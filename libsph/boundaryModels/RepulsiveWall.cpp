@@ -36,6 +36,11 @@ std::string describe(const RepulsionLaw& law) {
         law);
 }
 
+double repulsionRange(const RepulsionLaw& law, double support) {
+    if (const auto* lennardJones = std::get_if<LennardJonesMonaghan1994>(&law)) return lennardJones->range();
+    return support;
+}
+
 template <int D>
 void addRepulsion(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const RepulsionLaw& law) {
     const std::size_t n = view.fluid.ownedCount();
@@ -48,8 +53,7 @@ void addRepulsion(const BoundaryView<D>& view, const CellLinkedList<D>& patchCel
         [&](const auto& kernel, const auto& l) {
             using L = std::decay_t<decltype(l)>;
             const double inverseW0 = 1.0 / kernel.value(0.0);
-            double range = view.supportRadius;
-            if constexpr (std::is_same_v<L, LennardJonesMonaghan1994>) range = l.range();
+            const double range = repulsionRange(law, view.supportRadius);
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
                 Vec<D> sum = Vec<D>::Zero();

@@ -20,6 +20,8 @@ using RepulsionLaw = std::variant<MonaghanKajtar2009, LennardJonesMonaghan1994>;
 // Reads `type monaghanKajtar | lennardJones` and its coefficients from `dict`.
 RepulsionLaw readRepulsionLaw(const Dictionary& dict, const ModelContext& context);
 std::string describe(const RepulsionLaw& law);
+// How far the law repels: the kernel support (Monaghan-Kajtar) or r0 (Lennard-Jones).
+double repulsionRange(const RepulsionLaw& law, double support);
 
 // Adds the repulsion of the patch's particles (indexed by patchCells) to every fluid particle.
 template <int D>
@@ -31,6 +33,7 @@ public:
     explicit RepulsiveWall(RepulsionLaw law) : law_(law) {}
     bool actsThroughWallParticles() const override { return false; }
     std::string describe() const override { return sph::describe(law_); }
+    double reach(double support) const override { return repulsionRange(law_, support); }
     void addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t, std::size_t) override {
         addRepulsion(view, patchCells, law_);
     }

@@ -44,12 +44,6 @@ double haloReach(const FluidSystem<D>& system) {
 template <int D>
 std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
     if (!system.freeBodyPatches().empty()) return "a free body ('" + system.freeBodyPatches().front() + "')";
-    for (const Patch<D>& patch : system.patches) {
-        const std::string model = patch.model->describe();
-        if (model != "dynamicBoundary" && !model.starts_with("dummyParticles") && !model.starts_with("deficiencyCorrection"))
-            return "the boundary model of patch '" + patch.name + "' (" + model +
-                   "; so far dynamicBoundary, dummyParticles and deficiencyCorrection)";
-    }
     return std::nullopt;
 }
 

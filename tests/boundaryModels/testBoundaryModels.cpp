@@ -282,6 +282,14 @@ TEST(ModifiedDynamicBoundaryEnglish2022, RefusesWallsWithoutLayers) {
     }
 }
 
+TEST(ModifiedDynamicBoundaryEnglish2022, ReachesTheFluidAroundItsDeepestGhostNode) {
+    // What a decomposed run's halo must hold: the third layer, 2.5 dx deep, mirrors its ghost
+    // node 5 dx into the fluid, which reads the fluid within the support of it.
+    auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));
+    const double support = system.supportRadius();
+    EXPECT_NEAR(system.patches[0].model->reach(support), 5.0 * dx + support, 1e-15);
+}
+
 TEST(ModifiedDynamicBoundaryEnglish2022, HoldsTheColumnAgainstGravity) {
     // As the dummy particles above: the bottom row feels what the bulk feels.
     auto system = hydrostaticColumn(std::make_unique<ModifiedDynamicBoundaryEnglish2022<2>>(Dictionary::fromString("", "tank")));

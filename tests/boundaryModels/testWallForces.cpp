@@ -123,6 +123,15 @@ TEST(LennardJonesMonaghan1994, HandComputedAndZeroBeyondR0) {
     EXPECT_EQ(lj.acceleration<2>(Vec<2>(0.06, 0.0), 0.06).x(), 0.0);
 }
 
+TEST(RepulsiveWall, ReachesAsFarAsItsLawRepels) {
+    // What a decomposed run's halo must hold: the support for Monaghan-Kajtar, r0 for Lennard-Jones.
+    const double h = 1.3 * dx, support = 2.0 * h;
+    const RepulsiveWall<2> monaghanKajtar(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h)));
+    EXPECT_EQ(monaghanKajtar.reach(support), support);
+    const RepulsiveWall<2> lennardJones(readRepulsionLaw(dictionary("type lennardJones; Dc 1; r0 0.7;"), contextFor(h)));
+    EXPECT_EQ(lennardJones.reach(support), 0.7);
+}
+
 TEST(DeficiencyCorrection, OneDimensionCancelsTheSampledDeficiencyExactly) {
     // 1D fluid at uniform pressure to the right of a wall particle at x = 0 (Fig. 3 of the paper).
     const double h = 2.0 * dx;

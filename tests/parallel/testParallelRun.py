@@ -5,7 +5,7 @@ bit, and the same step count, over runs of 100 to 600 steps (many cell sorts, mi
 builds; new boxes every 100 steps in some). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
 particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
 channel with summation density, the deficiency correction (calibrated in a tank; the boundary
-integral in the dam break), moving and deforming walls (a sliding lid, an oscillating tank, a
+integral in the dam break), mDBC and the repulsive walls, moving and deforming walls (a sliding lid, an oscillating tank, a
 steep bulge), delta-SPH and particle shifting, and the 3D dam break. Also: the output opens as one series in
 ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
 stops all with its step and particle, and what does not run on several ranks stops every rank
@@ -49,13 +49,15 @@ class ParallelRun(unittest.TestCase):
         self.work = tempfile.TemporaryDirectory()
         self.addCleanup(self.work.cleanup)
 
-    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False, schemes=None):
-        """The case generated, the run controls set, its function objects removed unless `functions`."""
-        case = os.path.join(self.work.name, name + (f".{integrator}" if integrator else ""))
+    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False, schemes=None, tag=None):
+        """The case generated, the run controls set, its function objects removed unless `functions`;
+        `tag` names a variant's directory."""
+        case = os.path.join(self.work.name, name + (f".{integrator}" if integrator else "") + (f".{tag}" if tag else ""))
         shutil.copytree(os.path.join(ROOT, "cases", name), case,
                         ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
-        if boundary:  # the walls' model, before the generator lays them out for it
+        if boundary:  # the walls' model, and the generator lays them out for it
             edit(os.path.join(case, "constant", "boundaryProperties"), r"type\s+\w+;(\s*noSlip\s+\w+;)?", f"type {boundary};")
+            edit(os.path.join(case, "system", "generateParticlesDict"), r"\blayers\s+\d+;", "")
         if density:
             edit(os.path.join(case, "system", "sphSchemes"), r"density\s+\{\s*type\s+\w+;\s*\}", f"density {{ type {density}; }}")
         if schemes:  # lines added to system/sphSchemes (a later keyword replaces an earlier one)
@@ -168,6 +170,15 @@ class ParallelRun(unittest.TestCase):
         self.assert_equal_to_serial(self.case("lidDrivenCavity2D", 0.2, 0.1), (2, 3), ("0.1", "0.2"), options=("-balance", "1"))
         self.assert_equal_to_serial(self.case("sloshingTank2D", 0.2, 0.1), (3,), ("0.1", "0.2"))
         self.assert_equal_to_serial(self.case("steepBulge2D", 0.2, 0.1), (2, 4), ("0.1", "0.2"), options=("-balance", "1"))
+
+    def test_mdbc_and_the_repulsive_walls(self):
+        # mDBC: an owned wall particle's density reads the fluid around its ghost node, twice its
+        # depth in front of it (the halo reaches that far). Repulsive walls, one layer: the fluid
+        # near a box's face is pushed by the other rank's wall particles too.
+        self.assert_equal_to_serial(self.case("hydrostaticTankMDBC2D", 0.05, 0.025), (2, 3), ("0.025", "0.05"))
+        for tag, law in (("mk", "monaghanKajtar; K 1"), ("lj", "lennardJones; Dc 3; r0 7e-4")):
+            with self.subTest(law=law):
+                self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, law, tag=tag), (3,), ("0.01", "0.02"))
 
     def test_the_periodic_channel_with_summation_density(self):
         self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))
