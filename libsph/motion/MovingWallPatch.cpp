@@ -116,16 +116,28 @@ void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::siz
 }
 
 template <int D>
-void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore, const Vec<D>& gravity, double t) {
+std::vector<BodyLoadShare<D>> bodyLoadShares(const PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore) {
     const auto& acceleration = fluid[fields::acceleration];
     const double* m = fluid[fields::mass].data();
     const Vec<D> centreOfMass = body.centreOfMass();
-    Vec<D> force = Vec<D>::Zero();
-    double torque = 0.0;
+    std::vector<BodyLoadShare<D>> shares;
     for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
         const Vec<D> f = -m[i] * (acceleration[i] - accelerationBefore[i]);
-        force += f;
-        if constexpr (D == 2) torque += (fluid.position[i] - centreOfMass).x() * f.y() - (fluid.position[i] - centreOfMass).y() * f.x();
+        if (f == Vec<D>::Zero()) continue;
+        double torque = 0.0;
+        if constexpr (D == 2) torque = (fluid.position[i] - centreOfMass).x() * f.y() - (fluid.position[i] - centreOfMass).y() * f.x();
+        shares.push_back({i, f, torque});
+    }
+    return shares;
+}
+
+template <int D>
+void loadFreeBody(PatchMotion<D>& body, const std::vector<BodyLoadShare<D>>& shares, const Vec<D>& gravity, double t) {
+    Vec<D> force = Vec<D>::Zero();
+    double torque = 0.0;
+    for (const BodyLoadShare<D>& share : shares) {
+        force += share.force;
+        torque += share.torque;
     }
     body.setLoads(force, torque, gravity, t);
 }
@@ -136,8 +148,12 @@ template bool surfaceAlongCurve<3>(const ParticleSet<3>&, std::size_t, std::size
 template void moveWallPatch<1>(ParticleSet<1>&, const PatchMotion<1>&, std::size_t, std::size_t, double, bool);
 template void moveWallPatch<2>(ParticleSet<2>&, const PatchMotion<2>&, std::size_t, std::size_t, double, bool);
 template void moveWallPatch<3>(ParticleSet<3>&, const PatchMotion<3>&, std::size_t, std::size_t, double, bool);
-template void loadFreeBody<1>(PatchMotion<1>&, const ParticleSet<1>&, const std::vector<Vec<1>>&, const Vec<1>&, double);
-template void loadFreeBody<2>(PatchMotion<2>&, const ParticleSet<2>&, const std::vector<Vec<2>>&, const Vec<2>&, double);
-template void loadFreeBody<3>(PatchMotion<3>&, const ParticleSet<3>&, const std::vector<Vec<3>>&, const Vec<3>&, double);
+#define SPHKIT_INSTANTIATE(D)                                                                                                           \
+    template std::vector<BodyLoadShare<D>> bodyLoadShares<D>(const PatchMotion<D>&, const ParticleSet<D>&, const std::vector<Vec<D>>&); \
+    template void loadFreeBody<D>(PatchMotion<D>&, const std::vector<BodyLoadShare<D>>&, const Vec<D>&, double);
+SPHKIT_INSTANTIATE(1)
+SPHKIT_INSTANTIATE(2)
+SPHKIT_INSTANTIATE(3)
+#undef SPHKIT_INSTANTIATE
 
 }  // namespace sph

@@ -26,10 +26,23 @@ bool surfaceAlongCurve(const ParticleSet<D>& walls, std::size_t begin, std::size
 template <int D>
 void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::size_t begin, std::size_t end, double t, bool alongCurve);
 
-// A free body takes the reaction of what its patch's wall forces added to the fluid's owned
-// particles: F = -sum_i m_i (a_i - a_i^before) and, in 2D, the torque of those forces about its
-// centre of mass.
+// An owned fluid particle's share of a free body's loads: the reaction of what the patch's wall
+// forces added to it, -m_i (a_i - a_i^before), and in 2D its torque about the centre of mass.
 template <int D>
-void loadFreeBody(PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore, const Vec<D>& gravity, double t);
+struct BodyLoadShare {
+    std::size_t particle;  // its place on the rank that took it
+    Vec<D> force;
+    double torque;
+};
+
+// The shares of the owned fluid particles the patch's wall forces reached, in storage order (the
+// others' are zero: leaving them out changes no sum).
+template <int D>
+std::vector<BodyLoadShare<D>> bodyLoadShares(const PatchMotion<D>& body, const ParticleSet<D>& fluid, const std::vector<Vec<D>>& accelerationBefore);
+
+// A free body takes the sum of the shares, in their order: F = -sum_i m_i (a_i - a_i^before) and,
+// in 2D, the torque of those forces.
+template <int D>
+void loadFreeBody(PatchMotion<D>& body, const std::vector<BodyLoadShare<D>>& shares, const Vec<D>& gravity, double t);
 
 }  // namespace sph

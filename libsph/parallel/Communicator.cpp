@@ -71,6 +71,17 @@ std::vector<std::byte> Communicator::gatherToFirst(const std::vector<std::byte>&
     return gathered;
 }
 
+std::vector<double> Communicator::gatherToAll(std::span<const double> mine) const {
+    const int count = mpiByteCount(mine.size_bytes()) / static_cast<int>(sizeof(double));
+    std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(static_cast<std::size_t>(size_));
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, ranks_);
+    int total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) offsets[r] = total, total += counts[r];
+    std::vector<double> gathered(static_cast<std::size_t>(total));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, gathered.data(), counts.data(), offsets.data(), MPI_DOUBLE, ranks_);
+    return gathered;
+}
+
 std::vector<std::byte> Communicator::exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const {
     const auto ranks = static_cast<std::size_t>(size_);
     if (toRank.size() != ranks) throw std::logic_error("exchangeWithAll needs one buffer per rank");

@@ -44,6 +44,9 @@ public:
     // the bytes from rank 0 first, then rank 1's, ...; fromRank[r] says how many came from r.
     std::vector<std::byte> exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const;
 
+    // Every rank receives every rank's values, rank 0's first.
+    std::vector<double> gatherToAll(std::span<const double> mine) const;
+
     // Rank 0 receives every rank's bytes, rank 0's first (fromRank[r]: how many came from r);
     // the others receive nothing.
     std::vector<std::byte> gatherToFirst(const std::vector<std::byte>& mine, std::vector<std::size_t>& fromRank) const;

@@ -42,12 +42,6 @@ double haloReach(const FluidSystem<D>& system) {
 }  // namespace
 
 template <int D>
-std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system) {
-    if (!system.freeBodyPatches().empty()) return "a free body ('" + system.freeBodyPatches().front() + "')";
-    return std::nullopt;
-}
-
-template <int D>
 DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight)
     : ranks_(ranks),
       system_(system),
@@ -212,6 +206,37 @@ void DistributedSystem<D>::refreshShifted() {
     });
 }
 
+// The owned particles' shares (a copy's repeats its owner's) with their places in the serial
+// order, from every rank, sorted by that place: the serial run's storage order, in which it sums
+// them.
+template <int D>
+std::vector<BodyLoadShare<D>> DistributedSystem<D>::bodyLoadSharesOfAllRanks(const std::vector<BodyLoadShare<D>>& mine) const {
+    constexpr std::size_t width = D + 3;  // orderCell, orderRank, force, torque
+    const auto& cell = system_.fluid[fields::orderCell];
+    const auto& rank = system_.fluid[fields::orderRank];
+    std::vector<double> packed;
+    packed.reserve(width * mine.size());
+    for (const BodyLoadShare<D>& share : mine) {
+        if (!fluidOwned_[share.particle]) continue;
+        packed.push_back(cell[share.particle]);
+        packed.push_back(rank[share.particle]);
+        for (int d = 0; d < D; ++d) packed.push_back(share.force[d]);
+        packed.push_back(share.torque);
+    }
+    const std::vector<double> gathered = ranks_.gatherToAll(packed);
+    std::vector<std::size_t> order(gathered.size() / width);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto place = [&](std::size_t s) { return std::pair{gathered[s * width], gathered[s * width + 1]}; };
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return place(a) < place(b); });
+    std::vector<BodyLoadShare<D>> all;
+    for (const std::size_t s : order) {
+        BodyLoadShare<D> share{s, Vec<D>::Zero(), gathered[s * width + D + 2]};
+        for (int d = 0; d < D; ++d) share.force[d] = gathered[s * width + 2 + d];
+        all.push_back(share);
+    }
+    return all;
+}
+
 template <int D>
 void DistributedSystem<D>::refreshWithinEvaluations() {
     FluidSystem<D>& system = system_;
@@ -234,6 +259,12 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
     if (std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.surfaceAlongCurve; }))
         system.afterWallMotion = [this] { timed([this] { wallHalos_->refresh(system_.walls, fields::normal, fields::spacing, fields::area); }); };
     system.largestOverRanks = [this](double value) { return ranks_.maxOverRanks(value); };
+    if (!system.freeBodyPatches().empty())
+        system.bodyLoadsOverRanks = [this](const std::vector<BodyLoadShare<D>>& mine) {
+            std::vector<BodyLoadShare<D>> all;
+            timed([&] { all = bodyLoadSharesOfAllRanks(mine); });
+            return all;
+        };
     // The copies' own rates are replaced by their owners', unless a wall-force model reads them
     // first (the deficiency correction samples the uncorrected acceleration around its walls).
     const bool copiesRatesRead =
@@ -250,9 +281,7 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
     };
 }
 
-#define SPHKIT_INSTANTIATE(D)                                                           \
-    template std::optional<std::string> notYetOnSeveralRanks<D>(const FluidSystem<D>&); \
-    template class DistributedSystem<D>;
+#define SPHKIT_INSTANTIATE(D) template class DistributedSystem<D>;
 #ifdef SPHKIT_HAS_2D
 SPHKIT_INSTANTIATE(2)
 #endif

@@ -29,11 +29,6 @@
 
 namespace sph::parallel {
 
-// What the decomposed run does not share yet, for the message that stops it; nothing when the
-// case runs on several ranks.
-template <int D>
-std::optional<std::string> notYetOnSeveralRanks(const FluidSystem<D>& system);
-
 template <int D>
 class DistributedSystem {
 public:
@@ -98,6 +93,7 @@ private:
     HaloExchange<D> shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned);
     void numberByCell(ParticleSet<D>& fluid) const;
     void refreshWithinEvaluations();
+    std::vector<BodyLoadShare<D>> bodyLoadSharesOfAllRanks(const std::vector<BodyLoadShare<D>>& mine) const;
     template <class Exchange>
     void timed(Exchange&& exchange);
 

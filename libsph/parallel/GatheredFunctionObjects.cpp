@@ -7,6 +7,7 @@
 
 #include <numeric>
 #include <span>
+#include <utility>
 
 namespace sph::parallel {
 
@@ -53,7 +54,7 @@ GatheredFunctionObjects<D>::GatheredFunctionObjects(const Communicator& ranks, c
 }
 
 template <int D>
-void GatheredFunctionObjects<D>::execute(const DistributedSystem<D>& shared, double t, bool force) {
+void GatheredFunctionObjects<D>::execute(const DistributedSystem<D>& shared, FluidSystem<D>& running, double t, bool force) {
     if (!any_) return;
     ParticleSet<D> fluid = shared.ownedFluid(), walls = shared.ownedWalls();
     gatherToFirst(ranks_, fluid);
@@ -69,7 +70,18 @@ void GatheredFunctionObjects<D>::execute(const DistributedSystem<D>& shared, dou
     const FluidSystemView<D> gathered{view.fluid,     view.walls,     view.patches,       fluidCells,           view.wallCells,
                                       view.kernel,    view.viscosity, view.supportRadius, view.smoothingLength, view.viscous,
                                       view.domainMin, view.domainMax, view.gravity};
-    schedule_->execute(gathered, t, force);
+    // The motions lent for the execution, and given back however it ends.
+    const auto exchangeMotions = [&] {
+        for (std::size_t p = 0; p < system.patches.size(); ++p) std::swap(system.patches[p].motion, running.patches[p].motion);
+    };
+    exchangeMotions();
+    try {
+        schedule_->execute(gathered, t, force);
+    } catch (...) {
+        exchangeMotions();
+        throw;
+    }
+    exchangeMotions();
 }
 
 template <int D>

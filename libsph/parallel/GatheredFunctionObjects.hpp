@@ -29,8 +29,9 @@ public:
     bool dueAt(double t) const { return schedule_ && schedule_->dueAt(t); }
 
     // Collective: gathers the state to rank 0 and executes the objects due (every object when
-    // `force`), where there are objects.
-    void execute(const DistributedSystem<D>& shared, double t, bool force);
+    // `force`), where there are objects, with the patches' motions of `running` (rank 0's copy of
+    // the case never moves: a free body's state and loads are the running one's).
+    void execute(const DistributedSystem<D>& shared, FluidSystem<D>& running, double t, bool force);
 
     // Rank 0: the run's closing line of every error an object measured.
     void reportErrorAgainstCost(const std::filesystem::path& caseDirectory, double startTime, const RunCost& cost) const;

@@ -132,12 +132,10 @@ void printTimePerPart(const Communicator& ranks, const FluidSystem<D>& system, c
 
 template <int D>
 void requireSupported(const CaseSetup<D>& setup, RunMode mode) {
-    std::optional<std::string> missing = notYetOnSeveralRanks(*setup.system);
-    if (!missing && mode == RunMode::TimeLoop &&
-        std::find(nativeIntegrators.begin(), nativeIntegrators.end(), setup.integratorType) == nativeIntegrators.end())
-        missing = "the integrator " + setup.integratorType + " (so far symplectic, verlet, leapfrog and predictorCorrector)";
-    if (missing)
-        throw FatalError("error: wcsph -parallel does not run " + *missing + " on several ranks yet (issue 23); run the case without -parallel");
+    if (mode == RunMode::TimeLoop && std::find(nativeIntegrators.begin(), nativeIntegrators.end(), setup.integratorType) == nativeIntegrators.end())
+        throw FatalError(
+            "error: wcsph -parallel does not run the integrator " + setup.integratorType +
+            " (so far symplectic, verlet, leapfrog and predictorCorrector) on several ranks yet (issue 23); run the case without -parallel");
 }
 
 template <int D>
@@ -162,7 +160,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
     const auto executeFunctionObjects = [&](double t, bool force) {
         auto timer = system.timers.time(Stage::FunctionObjects);
-        functionObjects.execute(shared, t, force);
+        functionObjects.execute(shared, system, t, force);
     };
     const auto fluidParticles = static_cast<std::size_t>(ranks.sumOverRanks(static_cast<std::int64_t>(shared.ownedFluidCount())));
 

@@ -26,6 +26,7 @@
 #include "densityDiffusion/DensityDiffusion.hpp"
 #include "equationsOfState/EquationOfState.hpp"
 #include "kernels/Kernel.hpp"
+#include "motion/MovingWallPatch.hpp"
 #include "physics/CellOrderedFluid.hpp"
 #include "physics/FluidSystemView.hpp"
 #include "physics/Gravity.hpp"
@@ -131,6 +132,9 @@ public:
     // The largest of every rank's values, where a pass needs a maximum over all particles (the
     // shifting's bound by the fastest particle). Empty in a serial run.
     std::function<double(double)> largestOverRanks;
+    // Every rank's shares of a free body's loads, in the order the serial run sums them. Empty in
+    // a serial run.
+    std::function<std::vector<BodyLoadShare<D>>(const std::vector<BodyLoadShare<D>>&)> bodyLoadsOverRanks;
     // Per fluid particle, whether this rank uses the rates it computes: its owned particles, where
     // the copies take their owners' rates and no model reads a copy's within the evaluation. The
     // pair loop then skips the pairs of two particles in cells where none is wanted. Null in a

@@ -236,7 +236,10 @@ void FluidSystem<D>::addWallForces(double t) {
         std::vector<Vec<D>> before;
         if (free) before = acceleration;
         patch.model->addWallForces(view, *patch.cells, patch.begin, patch.end);
-        if (free) loadFreeBody(*patch.motion, fluid, before, gravityAt(t), t);
+        if (!free) continue;
+        std::vector<BodyLoadShare<D>> shares = bodyLoadShares(*patch.motion, fluid, before);
+        if (bodyLoadsOverRanks) shares = bodyLoadsOverRanks(shares);
+        loadFreeBody(*patch.motion, shares, gravityAt(t), t);
     }
 }
 

@@ -5,7 +5,7 @@ bit, and the same step count, over runs of 100 to 600 steps (many cell sorts, mi
 builds; new boxes every 100 steps in some). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
 particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
 channel with summation density, the deficiency correction (calibrated in a tank; the boundary
-integral in the dam break), mDBC and the repulsive walls, moving and deforming walls (a sliding lid, an oscillating tank, a
+integral in the dam break), mDBC and the repulsive walls, moving and deforming walls, a free body (a sliding lid, an oscillating tank, a
 steep bulge), delta-SPH and particle shifting, and the 3D dam break. Also: the output opens as one series in
 ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
 stops all with its step and particle, and what does not run on several ranks stops every rank
@@ -179,6 +179,17 @@ class ParallelRun(unittest.TestCase):
         for tag, law in (("mk", "monaghanKajtar; K 1"), ("lj", "lennardJones; Dc 3; r0 7e-4")):
             with self.subTest(law=law):
                 self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, law, tag=tag), (3,), ("0.01", "0.02"))
+
+    def test_a_free_body(self):
+        # The sinking cylinder (the deficiency correction, Lennard-Jones partner): every rank's
+        # shares of its loads summed in the serial order, so that every rank moves it alike; its
+        # function object reports the running body (state and loads), as the serial run's.
+        case = self.case("sinkingCylinder2D", 0.04, 0.02, functions=True)
+        self.assert_equal_to_serial(case, (2, 3), ("0.02", "0.04"), options=("-balance", "1"))
+        with open(os.path.join(case + ".np2", "postProcessing", "cylinder", "0", "body.dat")) as f:
+            rows = [line.split() for line in f if not line.startswith("#")]
+        self.assertEqual(len(rows), 21)
+        self.assertLess(float(rows[-1][2]), 0.3)  # it sank
 
     def test_the_periodic_channel_with_summation_density(self):
         self.assert_equal_to_serial(self.case("poiseuille2D", 0.04, 0.02, density="summation"), (2, 3), ("0.02", "0.04"))

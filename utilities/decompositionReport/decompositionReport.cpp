@@ -46,8 +46,6 @@ void report(const sph::parallel::Communicator& ranks, const std::filesystem::pat
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
-    if (const std::optional<std::string> missing = parallel::notYetOnSeveralRanks(system))
-        throw FatalError("error: wcsph -parallel does not run " + *missing + " on several ranks yet (issue 23)");
     const parallel::DistributedSystem<D> shared(ranks, system, wallWeight);
     const std::size_t bytesBefore = shared.haloBytesSent(), messagesBefore = shared.haloMessagesSent();
     system.evaluateRates(setup.header.time);
