@@ -1,43 +1,12 @@
 #include "parallel/GatheredFunctionObjects.hpp"
 
-#include "core/FieldBytes.hpp"
-#include "io/ParticleState.hpp"
+#include "parallel/GatheredParticles.hpp"
 
 #include <fmt/format.h>
 
-#include <numeric>
-#include <span>
 #include <utility>
 
 namespace sph::parallel {
-
-namespace {
-
-// Every rank's particles of `set` on rank 0, in the serial order; `set` is left empty elsewhere.
-template <int D>
-void gatherToFirst(const Communicator& ranks, ParticleSet<D>& set) {
-    std::vector<std::uint32_t> all(set.size());
-    std::iota(all.begin(), all.end(), 0u);
-    std::vector<std::byte> mine;
-    pack(everyArray(set), all, mine);
-    std::vector<std::size_t> fromRank;
-    const std::vector<std::byte> gathered = ranks.gatherToFirst(mine, fromRank);
-    if (ranks.rank() != 0) {
-        set.resize(0);
-        return;
-    }
-    const std::size_t record = bytesPerParticle(everyArray(set));
-    set.resize(record > 0 ? gathered.size() / record : 0);
-    const std::vector<FieldBytes> arrays = everyArray(set);
-    std::size_t next = 0, offset = 0;
-    for (const std::size_t bytes : fromRank) {
-        next += unpack(arrays, next, std::span(gathered).subspan(offset, bytes));
-        offset += bytes;
-    }
-    set.permute(serialOrder(set));
-}
-
-}  // namespace
 
 template <int D>
 GatheredFunctionObjects<D>::GatheredFunctionObjects(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start,

@@ -9,12 +9,14 @@
 #include "driver/StopRequest.hpp"
 #include "driver/Threads.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/ParticleCsv.hpp"
 #include "io/PvdCollection.hpp"
 #include "io/ParticleState.hpp"
 #include "io/TimeName.hpp"
 #include "parallel/CostBalance.hpp"
 #include "parallel/DistributedSystem.hpp"
 #include "parallel/GatheredFunctionObjects.hpp"
+#include "parallel/GatheredParticles.hpp"
 #include "parallel/ParticlePieces.hpp"
 
 #include <fmt/format.h>
@@ -57,6 +59,21 @@ void writeState(const Communicator& ranks, const std::filesystem::path& director
     writeParticlePieces(ranks, directory, "fluid", shared.ownedFluid(), header);
     header.patchNames = patchNames;
     writeParticlePieces(ranks, directory, "walls", shared.ownedWalls(), header);
+}
+
+// Collective. fluid.csv and walls.csv as the serial run writes them: every rank's owned particles
+// gathered on rank 0, in the serial order.
+template <int D>
+void writeGatheredCsv(const Communicator& ranks, const std::filesystem::path& directory, const DistributedSystem<D>& shared) {
+    for (auto [name, set] : {std::pair{"fluid.csv", shared.ownedFluid()}, std::pair{"walls.csv", shared.ownedWalls()}}) {
+        gatherToFirst(ranks, set);
+        together(ranks, [&] {
+            if (ranks.rank() != 0) return;
+            set.remove(fields::orderCell);  // the pieces' own
+            set.remove(fields::orderRank);
+            writeParticleCsv(directory / name, set);
+        });
+    }
 }
 
 // What the ranks agree on after each step: every entry the largest any rank reported.
@@ -146,15 +163,17 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
     together(ranks, [&] {
         if (ranks.rank() == 0) std::filesystem::create_directories(directory.parent_path());
     });
-    writeDirectoryTogether(ranks, directory,
-                           [&](const std::filesystem::path& temporary) { writeState(ranks, temporary, shared, setup.header, setup.patchNames); });
-    fmt::print("\nWrote the right-hand side at t = {:g} on {} ranks to {} (fluid.pvtu, walls.pvtu)\n", t, ranks.size(), directory.string());
+    writeDirectoryTogether(ranks, directory, [&](const std::filesystem::path& temporary) {
+        writeState(ranks, temporary, shared, setup.header, setup.patchNames);
+        writeGatheredCsv(ranks, temporary, shared);
+    });
+    fmt::print("\nWrote the right-hand side at t = {:g} on {} ranks to {} (fluid.pvtu, walls.pvtu and .csv)\n", t, ranks.size(), directory.string());
 }
 
 template <int D>
 void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
               DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, GatheredFunctionObjects<D>& functionObjects,
-              double balanceThreshold) {
+              bool writeCsv, double balanceThreshold) {
     FluidSystem<D>& system = *setup.system;
     TimeIntegrator<D>& integrator = *setup.integrator;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
@@ -174,8 +193,10 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         header.step = step;
         collectRestartState(system, integrator, setup.integratorType, header);
         const std::string name = timeName(t);
-        writeDirectoryTogether(ranks, caseDirectory / name,
-                               [&](const std::filesystem::path& temporary) { writeState(ranks, temporary, shared, header, setup.patchNames); });
+        writeDirectoryTogether(ranks, caseDirectory / name, [&](const std::filesystem::path& temporary) {
+            writeState(ranks, temporary, shared, header, setup.patchNames);
+            if (writeCsv) writeGatheredCsv(ranks, temporary, shared);
+        });
         if (ranks.rank() == 0) pvd.add(t, {name + "/fluid.pvtu", name + "/walls.pvtu"});
     };
 
@@ -279,11 +300,12 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;
     std::optional<GatheredFunctionObjects<D>> functionObjects;
+    bool writeCsv = false;
     if (mode == RunMode::TimeLoop) {
         controls = RunControls::read(controlDict);
         if (!(controls->endTime > setup.header.time))
             controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", setup.header.time, controls->endTime));
-        if (controlDict.getOrDefault("writeCsv", false)) controlDict.fail("writeCsv", "wcsph -parallel writes .vtu pieces only; set it to no");
+        writeCsv = controlDict.getOrDefault("writeCsv", false);
         const bool modifiable = controlDict.getOrDefault("runTimeModifiable", true);
         // Rank 0 alone reads a changed controlDict; the others take its values.
         watcher.emplace(caseDirectory / "system/controlDict", modifiable && ranks.rank() == 0);
@@ -297,7 +319,7 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     DistributedSystem<D> shared(ranks, system);
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
-    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects, balanceThreshold);
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects, writeCsv, balanceThreshold);
 }
 
 }  // namespace

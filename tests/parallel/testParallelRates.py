@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """wcsph -parallel -rates on 1-4 ranks (mpirun, oversubscribed, one thread each) against the
 serial -rates of the same build: every particle's every array (acceleration, density rate,
-pressure, ...) equal bit for bit, on a periodic case without walls (taylorGreen2D), the 2D dam
+pressure, ...) equal bit for bit, and the .csv files the same text, on a periodic case without walls (taylorGreen2D), the 2D dam
 break as shipped (dummy particles, no-slip: the walls' extrapolated state crosses ranks), the 2D
 dam break on dynamic-boundary walls, the periodic channel with summation density (the summed
 density crosses ranks), the deficiency correction in a tank, mDBC in a tank and the 3D dam break (SPHERIC Test 2, dynamic boundary, pairs in vector
@@ -83,13 +83,20 @@ class ParallelRates(unittest.TestCase):
         self.assertEqual(run.returncode, 0, run.stdout[-3000:] + run.stderr[-3000:])
         directory = os.path.join(case, "postProcessing", "rates", self.start)
         suffix = ".pvtu" if ranks else ".vtu"
-        return {part: arrays(os.path.join(directory, part + suffix)) for part in ("fluid", "walls")}
+        written = {}
+        for part in ("fluid", "walls"):
+            with open(os.path.join(directory, part + ".csv")) as f:
+                written[part] = (arrays(os.path.join(directory, part + suffix)), f.read())
+        return written
 
     def assert_equal_to_serial(self, case, ranks):
-        serial = self.rates(case)
+        serial_written = self.rates(case)
+        serial = {part: arrays for part, (arrays, _) in serial_written.items()}
         for n in ranks:
-            parallel = self.rates(case, n)
+            parallel_written = self.rates(case, n)
+            parallel = {part: arrays for part, (arrays, _) in parallel_written.items()}
             for part in ("fluid", "walls"):
+                self.assertEqual(serial_written[part][1], parallel_written[part][1], f"{part}.csv on {n} ranks")
                 # Pieces carry each particle's place in the serial order besides what the serial state holds.
                 self.assertEqual(sorted([*serial[part], "orderCell", "orderRank"]), sorted(parallel[part]), f"{part} arrays on {n} ranks")
                 for name, values in serial[part].items():
