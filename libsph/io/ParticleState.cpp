@@ -37,12 +37,13 @@ template <int D>
 std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
     const auto& cell = set[fields::orderCell];
     const auto& rank = set[fields::orderRank];
+    // Sorted as (place, index) pairs in one array rather than as indices that look their keys up
+    // (a halo build sorts every particle a rank holds).
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> places(set.size());
+    for (std::size_t i = 0; i < set.size(); ++i) places[i] = {serialPlace(cell[i], rank[i]), static_cast<std::uint32_t>(i)};
+    std::sort(places.begin(), places.end());
     std::vector<std::uint32_t> order(set.size());
-    std::iota(order.begin(), order.end(), 0u);
-    // Cells are numbered below 2^32: as unsigned, whatever the int holding them reads.
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return std::pair{static_cast<std::uint32_t>(cell[a]), rank[a]} < std::pair{static_cast<std::uint32_t>(cell[b]), rank[b]};
-    });
+    for (std::size_t k = 0; k < places.size(); ++k) order[k] = places[k].second;
     return order;
 }
 

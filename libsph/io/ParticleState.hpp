@@ -20,6 +20,12 @@ inline constexpr IntegerField orderCell{"orderCell"};
 inline constexpr IntegerField orderRank{"orderRank"};
 }  // namespace fields
 
+// A particle's place in the serial order as one integer: its orderCell (cells are numbered below
+// 2^32: as unsigned, whatever the int holding it reads), then its orderRank (from 0).
+inline std::uint64_t serialPlace(int orderCell, int orderRank) {
+    return (std::uint64_t{static_cast<std::uint32_t>(orderCell)} << 32) | static_cast<std::uint32_t>(orderRank);
+}
+
 // The places of a set's particles in the serial order (sorted by orderCell, then orderRank).
 template <int D>
 std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set);

@@ -14,13 +14,6 @@ namespace sph::parallel {
 
 namespace {
 
-template <int D>
-auto orderKey(const ParticleSet<D>& set) {
-    return [cell = set[fields::orderCell].data(), rank = set[fields::orderRank].data()](std::uint32_t i) {
-        return std::pair{static_cast<std::uint32_t>(cell[i]), rank[i]};
-    };
-}
-
 std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
     std::vector<std::uint32_t> places;
     for (std::size_t i = 0; i < owned.size(); ++i)
@@ -116,18 +109,23 @@ HaloExchange<D> DistributedSystem<D>::shareWithNeighbours(ParticleSet<D>& set, s
 template <int D>
 void DistributedSystem<D>::numberByCell(ParticleSet<D>& fluid) const {
     const CellLinkedList<D>& cells = system_.fluidCells();
-    std::vector<std::uint32_t> cell(fluid.size());
-    for (std::size_t i = 0; i < fluid.size(); ++i) cell[i] = static_cast<std::uint32_t>(cells.cellIndex(fluid.position[i]));
-    std::vector<std::uint32_t> order(fluid.size());
-    std::iota(order.begin(), order.end(), 0u);
-    const auto key = orderKey(fluid);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return std::pair{cell[a], key(a)} < std::pair{cell[b], key(b)}; });
     auto& orderCells = fluid[fields::orderCell];
     auto& orderRanks = fluid[fields::orderRank];
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        const std::uint32_t i = order[k];
-        orderRanks[i] = k > 0 && cell[order[k - 1]] == cell[i] ? orderRanks[order[k - 1]] + 1 : 0;
-        orderCells[i] = static_cast<int>(cell[i]);
+    // By the new cell, then the place before (as the serial run's stable sort by cell), packed
+    // with the index into one array of keys: (cell, orderCell) and (orderRank, index).
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> keys(fluid.size());
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+        const auto cell = static_cast<std::uint32_t>(cells.cellIndex(fluid.position[i]));
+        keys[i] = {(std::uint64_t{cell} << 32) | static_cast<std::uint32_t>(orderCells[i]),
+                   (std::uint64_t{static_cast<std::uint32_t>(orderRanks[i])} << 32) | i};
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const std::size_t i = keys[k].second & 0xffffffffu;
+        const auto cell = static_cast<std::uint32_t>(keys[k].first >> 32);
+        const bool sameCell = k > 0 && keys[k - 1].first >> 32 == cell;
+        orderRanks[i] = sameCell ? orderRanks[keys[k - 1].second & 0xffffffffu] + 1 : 0;
+        orderCells[i] = static_cast<int>(cell);
     }
 }
 
