@@ -30,7 +30,7 @@ void moveWallPatch(ParticleSet<D>& walls, const PatchMotion<D>& motion, std::siz
 // forces added to it, -m_i (a_i - a_i^before), and in 2D its torque about the centre of mass.
 template <int D>
 struct BodyLoadShare {
-    std::size_t particle;  // its place on the rank that took it
+    std::size_t particle;  // its place on the rank that took it (once gathered from every rank, in the gathered array)
     Vec<D> force;
     double torque;
 };

@@ -209,14 +209,14 @@ void DistributedSystem<D>::refreshShifted() {
 // them.
 template <int D>
 std::vector<BodyLoadShare<D>> DistributedSystem<D>::bodyLoadSharesOfAllRanks(const std::vector<BodyLoadShare<D>>& mine) const {
-    constexpr std::size_t width = D + 3;  // orderCell, orderRank, force, torque
+    constexpr std::size_t width = D + 3;  // orderCell, orderRank, force, torque: whole numbers below 2^32 exact as doubles
     const auto& cell = system_.fluid[fields::orderCell];
     const auto& rank = system_.fluid[fields::orderRank];
     std::vector<double> packed;
     packed.reserve(width * mine.size());
     for (const BodyLoadShare<D>& share : mine) {
         if (!fluidOwned_[share.particle]) continue;
-        packed.push_back(cell[share.particle]);
+        packed.push_back(static_cast<std::uint32_t>(cell[share.particle]));  // as serialPlace orders cells
         packed.push_back(rank[share.particle]);
         for (int d = 0; d < D; ++d) packed.push_back(share.force[d]);
         packed.push_back(share.torque);

@@ -65,7 +65,7 @@ void writeState(const Communicator& ranks, const std::filesystem::path& director
 // gathered on rank 0, in the serial order.
 template <int D>
 void writeGatheredCsv(const Communicator& ranks, const std::filesystem::path& directory, const DistributedSystem<D>& shared) {
-    for (auto [name, set] : {std::pair{"fluid.csv", shared.ownedFluid()}, std::pair{"walls.csv", shared.ownedWalls()}}) {
+    const auto write = [&](const char* name, ParticleSet<D> set) {
         gatherToFirst(ranks, set);
         together(ranks, [&] {
             if (ranks.rank() != 0) return;
@@ -73,7 +73,9 @@ void writeGatheredCsv(const Communicator& ranks, const std::filesystem::path& di
             set.remove(fields::orderRank);
             writeParticleCsv(directory / name, set);
         });
-    }
+    };
+    write("fluid.csv", shared.ownedFluid());
+    write("walls.csv", shared.ownedWalls());
 }
 
 // What the ranks agree on after each step: every entry the largest any rank reported.
