@@ -12,6 +12,8 @@
 // Example (system/sphSchemes):   particleShifting { type lind; coefficient 2; }
 #pragma once
 
+#include "particleShifting/TensileShiftingWeight.hpp"
+
 namespace sph {
 
 struct FickianShiftingLind2012 {
@@ -20,7 +22,7 @@ struct FickianShiftingLind2012 {
     FickianShiftingLind2012(double coefficient, double h) : coefficient(coefficient), h(h) {}
 
     // Each pair's grad W counts once: the plain concentration gradient.
-    double pairWeight(double /*wOverWdx*/) const { return 1.0; }
+    TensileShiftingWeight pairWeight() const { return {}; }
     // delta u_i = -scale sum_j V_j pairWeight grad_i W_ij, bounded by speedBound.
     double scale(double speed, double /*maxSpeed*/) const { return coefficient * h * speed; }
     double speedBound(double speed, double /*maxSpeed*/) const { return 0.5 * speed; }

@@ -26,6 +26,17 @@ struct ParticleShifting {
     double dx = 0.0;  // W(dx) scales the anti-clumping term
 
     bool enabled() const { return !std::holds_alternative<NoShifting>(law); }
+    // The law's pair weight (none: every pair counts once).
+    TensileShiftingWeight pairWeight() const {
+        return std::visit(
+            [](const auto& l) {
+                if constexpr (std::decay_t<decltype(l)>::enabled)
+                    return l.pairWeight();
+                else
+                    return TensileShiftingWeight{};
+            },
+            law);
+    }
 };
 
 using ParticleShiftingRegistry = Registry<ParticleShifting, const Dictionary&, const ModelContext&>;

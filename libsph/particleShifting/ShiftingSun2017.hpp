@@ -11,6 +11,8 @@
 // Example (system/sphSchemes):   particleShifting { type sun; R 0.2; n 4; }
 #pragma once
 
+#include "particleShifting/TensileShiftingWeight.hpp"
+
 namespace sph {
 
 struct ShiftingSun2017 {
@@ -18,14 +20,8 @@ struct ShiftingSun2017 {
 
     ShiftingSun2017(double R, int n, double h) : R(R), n(n), h(h) {}
 
-    // 1 + R (W_ij / W(dx))^n: pairs closer than dx push harder (Monaghan's tensile term). The
-    // power by squaring: n = 4 in two dependent multiplications rather than a chain of four.
-    double pairWeight(double wOverWdx) const {
-        double power = 1.0;
-        for (int e = n; e > 0; e >>= 1, wOverWdx *= wOverWdx)
-            if (e & 1) power *= wOverWdx;
-        return 1.0 + R * power;
-    }
+    // 1 + R (W_ij / W(dx))^n: pairs closer than dx push harder (Monaghan's tensile term).
+    TensileShiftingWeight pairWeight() const { return {R, n}; }
     double scale(double /*speed*/, double maxSpeed) const { return 4.0 * h * maxSpeed; }
     double speedBound(double /*speed*/, double maxSpeed) const { return 0.5 * maxSpeed; }
 

@@ -7,8 +7,11 @@
 // near walls, and the same for a given thread count, so a run is reproducible), and a thread
 // adds to both particles of a pair in its own accumulator; a second pass sums the accumulators,
 // adds gravity and the fluid-wall terms, and writes the rates in storage order. Summation order
-// depends on the thread count (rates agree to round-off, not bit for bit).
+// depends on the thread count (rates agree to round-off, not bit for bit). In a step's last
+// evaluation with particle shifting, each particle's pair loop is followed by the shifting pass's
+// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair.
 #include "physics/FluidPairTerms.hpp"
+#include "physics/ShiftingPairSums.hpp"
 
 #include <Eigen/LU>  // delta-SPH's renormalisation matrix
 
@@ -37,9 +40,16 @@ public:
     using Moment = Eigen::Matrix<double, D, D>;
     static constexpr int gradientSumCount = D * D + D;
 
-    // Sizes the cell-ordered copies and accumulators; call before the parallel region.
-    FluidRatesLoop(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, Viscosity viscosity, Diffusion diffusion, const Vec<D>& gravity)
-        : cells_(s.fluidCells()), wallCells_(s.wallCells()), ordered_(ordered), kernel_(kernel), pair_{viscosity, diffusion, gravity, {}} {
+    // Sizes the cell-ordered copies and accumulators; call before the parallel region. With
+    // shiftingSums, the loop also takes the shifting pass's pair sums into it.
+    FluidRatesLoop(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, ParticleShiftingScratch<D>* shiftingSums, Kernel kernel, Viscosity viscosity,
+                   Diffusion diffusion, const Vec<D>& gravity)
+        : cells_(s.fluidCells()),
+          wallCells_(s.wallCells()),
+          ordered_(ordered),
+          shifting_(shiftingSums),
+          kernel_(kernel),
+          pair_{viscosity, diffusion, gravity, {}} {
         n_ = cells_.pointCount();
         owned_ = s.fluid.ownedCount();
         x_ = s.fluid.position.data();
@@ -68,7 +78,14 @@ public:
         }
         ordered.acceleration.resize(threads);
         if constexpr (Terms::densityRate) ordered.densityRate.resize(threads);
-        wanted_ = s.ratesWanted ? s.ratesWanted->data() : nullptr;
+        if (shifting_) {
+            shifting_->volume.resize(n_);
+            shifting_->density.resize(n_);
+            shifting_->sumsOfThread.resize(threads);
+        }
+        // A copy's shifting sums are read (its free-surface normal reaches the owned particles
+        // near it): with them, every pair counts.
+        wanted_ = s.ratesWanted && !shifting_ ? s.ratesWanted->data() : nullptr;
         if (wanted_) {
             ordered.cellWanted.assign(cells_.cellCount(), 0);
             for (std::size_t k = 0; k < n_; ++k)
@@ -124,6 +141,11 @@ private:
             ordered_.gradientSums[thread_].assign(n_ * gradientSumCount, 0.0);
             gradientSums_ = ordered_.gradientSums[thread_].data();
         }
+        if (shifting_) {
+            shifting_->sumsOfThread[thread_].assign(n_, typename ParticleShiftingScratch<D>::Sums{});
+            shiftingSums_ = shifting_->sumsOfThread[thread_].data();
+            if (thread_ == 0) shifting_->summingThreads = team_;
+        }
     }
 
     void copyIntoCellOrder() {
@@ -140,6 +162,10 @@ private:
             if constexpr (Terms::readsVelocity) velocity[k] = v_[i];
             if constexpr (Terms::readsDensity) density[k] = rho_[i];
             if constexpr (Terms::diffuses) volume[k] = m_[i] / rho_[i];
+            if (shifting_) {
+                shifting_->volume[k] = m_[i] / rho_[i];
+                shifting_->density[k] = rho_[i];
+            }
         }  // implicit barrier: the copies are complete
     }
 
@@ -338,6 +364,7 @@ private:
                 }
             }
             if constexpr (lanes > 1) addWhatNeighboursReceived(count);
+            if (shifting_) addShiftingPairs<Wraps::value>(cells_, kernel, *shifting_, k, xk, listed, count, shiftingSums_);
             as[k * D] += a0;
             if constexpr (D > 1) as[k * D + 1] += a1;
             if constexpr (D > 2) as[k * D + 2] += a2;
@@ -449,6 +476,7 @@ private:
     const CellLinkedList<D>& cells_;
     const CellLinkedList<D>& wallCells_;
     CellOrderedFluid<D>& ordered_;
+    ParticleShiftingScratch<D>* shifting_;  // null unless the shifting sums are wanted
     Kernel kernel_;
     FluidPairTerms<D, Terms, Viscosity, Diffusion> pair_;
     std::size_t n_ = 0, owned_ = 0;
@@ -472,6 +500,7 @@ private:
     double* accelerations_ = nullptr;  // this thread's accumulator, D doubles per place
     double* densityRates_ = nullptr;
     double* gradientSums_ = nullptr;  // delta-SPH's, gradientSumCount doubles per place
+    typename ParticleShiftingScratch<D>::Sums* shiftingSums_ = nullptr;
     std::uint32_t stencilCell_ = std::numeric_limits<std::uint32_t>::max();
     Stencil stencil_;
     std::uint32_t pairStencilCell_ = std::numeric_limits<std::uint32_t>::max();
@@ -480,11 +509,13 @@ private:
     Stencil wallStencil_;
 };
 
-// The fluid's rates, for one instantiation of the terms.
+// The fluid's rates, for one instantiation of the terms; with shiftingSums, the shifting pass's
+// pair sums too.
 template <int D, bool Continuity, bool ViscousOnly, class Kernel, class Viscosity, class Diffusion>
-void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, Kernel kernel, Viscosity viscosity, Diffusion diffusion, const Vec<D>& gravity) {
+void fluidRates(FluidSystem<D>& s, CellOrderedFluid<D>& ordered, ParticleShiftingScratch<D>* shiftingSums, Kernel kernel, Viscosity viscosity,
+                Diffusion diffusion, const Vec<D>& gravity) {
     using Loop = FluidRatesLoop<D, FluidRateTerms<Continuity, ViscousOnly, Viscosity, Diffusion>, Kernel, Viscosity, Diffusion>;
-    const Loop shared(s, ordered, kernel, viscosity, diffusion, gravity);
+    const Loop shared(s, ordered, shiftingSums, kernel, viscosity, diffusion, gravity);
 #pragma omp parallel
     {
         Loop loop = shared;

@@ -150,6 +150,8 @@ private:
     void computeSummationDensity();
     void computeFluidPressure();
     void computeForces(const Vec<D>& gravity, RateTerms terms);
+    // Whether the last evaluation's force loop took the shifting pairs' sums at the present state.
+    bool stateAsShiftingSummed() const;
     void addWallForces(double t);
     void moveWalls(double t);
     void indexWalls();

@@ -55,6 +55,8 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
     if (shiftsParticles()) {
         fluid.add(fields::shiftingVelocity, Vec<D>::Zero());
         fluid.add(fields::freeSurfaceLambda, 1.0, false);  // not written: recomputed every step
+        shiftingScratch_.weight = models_.shifting.pairWeight();
+        shiftingScratch_.inverseWdx = 1.0 / std::visit([&](const auto& k) { return k.value(models_.shifting.dx); }, models_.kernel);
     }
     walls.add(fields::pressure, 0.0);
     walls.add(fields::density, std::visit([](const auto& e) { return e.rho0; }, models_.eos));
@@ -324,14 +326,19 @@ void FluidSystem<D>::computeForces(const Vec<D>& gravity, RateTerms terms) {
             return diffusion;
         },
         models_.diffusion);
+    // With shifting, the step's last evaluation of every term takes the shifting pass's pair sums
+    // on the pairs it lists: the pass reuses them if the state is still this one when it runs.
+    ParticleShiftingScratch<D>* const shiftingSums =
+        shiftsParticles() && terms == RateTerms::All && this->evaluatingStepEnd ? &shiftingScratch_ : nullptr;
+    shiftingScratch_.summedByRates = shiftingSums != nullptr;
     const auto dispatch = [&]<bool ViscousOnly>(const auto& kernel, const auto& viscosity, const auto& diffusion) {
         using Diffusion = std::decay_t<decltype(diffusion)>;
         if constexpr (!pairLoopsCompiled<D, std::decay_t<decltype(kernel)>>) {
             throw std::logic_error(pairLoopsNotCompiled);
         } else if (continuity()) {
-            fluidRates<D, true, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);
+            fluidRates<D, true, ViscousOnly>(*this, cellOrdered_, shiftingSums, kernel, viscosity, diffusion, gravity);
         } else if constexpr (!Diffusion::enabled) {  // the case reader rejects diffusion with summation density
-            fluidRates<D, false, ViscousOnly>(*this, cellOrdered_, kernel, viscosity, diffusion, gravity);
+            fluidRates<D, false, ViscousOnly>(*this, cellOrdered_, shiftingSums, kernel, viscosity, diffusion, gravity);
         }
     };
     std::visit(

@@ -1,10 +1,11 @@
 // FluidSystem<D>::shiftParticles, included by FluidSystem.tpp. Once a step, from the state at
 // its end:
-//   1. sums      each fluid pair once (per-thread accumulators, as the force loop), then the
-//                walls gathered per particle: the moment matrix
-//                and concentration gradient of FreeSurfaceMarrone2010.hpp (lambda_i, n_i) and
-//                the law's sum (FickianShiftingLind2012.hpp, ShiftingSun2017.hpp), walls
-//                completing them
+//   1. sums      each fluid pair once (per-thread accumulators, ShiftingPairSums.hpp), then
+//                the walls gathered per particle: the moment matrix and concentration
+//                gradient of FreeSurfaceMarrone2010.hpp (lambda_i, n_i) and the law's sum
+//                (FickianShiftingLind2012.hpp, ShiftingSun2017.hpp), walls completing them.
+//                The pairs' sums are the force loop's where the step's last evaluation took
+//                them at the state the pass reads (FluidRates.tpp): it lists the pairs anyway
 //   2. surface   each particle within the support of a free-surface particle takes the mean of
 //                their normals (free-surface particles are few: serial)
 //   3. shift     the law's velocity; near the free surface its component along that normal removed;
@@ -20,6 +21,7 @@
 // shift had emptied fell until the fluid ran into it (sloshingTank2D with dummy particles: a
 // particle through the bottom corner at t = 8 s). The velocity is not corrected (as Sun et al.).
 #include "kernels/KernelOutsideFraction.hpp"
+#include "physics/ShiftingPairSums.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -51,7 +53,7 @@ struct ShiftingViews {
     const std::vector<Patch<D>>& patches;
     ParticleShiftingScratch<D>& scratch;
     std::size_t n;  // owned fluid particles
-    double radius, inverseWdx, dx;
+    double radius, dx;
     FreeSurfaceMarrone2010 surface;
     Vec<D>* x;
     const Vec<D>* v;
@@ -73,23 +75,17 @@ struct ShiftingViews {
     }
 };
 
-// Pass 1's sums, per thread and in cell order: each fluid pair is visited once and adds to both
-// its particles, as the force loop does (CellOrderedFluid.hpp). What k receives is summed in
-// registers and added once; a pair's terms are the same for both particles but for the other's
-// volume and the gradient's sign. Inside the parallel region.
-template <int D, class Kernel, class Law, class Wraps>
-void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, const Law& law, std::vector<typename ParticleShiftingScratch<D>::Sums>& mine,
-                      Wraps) {
-    using Matrix = Eigen::Matrix<double, D, D>;
+// Pass 1's sums, per thread and in cell order, where the rates' force loop did not take them:
+// each fluid pair is visited once and adds to both its particles, as the force loop does
+// (CellOrderedFluid.hpp). Inside the parallel region.
+template <int D, class Kernel, class Wraps>
+void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, std::vector<typename ParticleShiftingScratch<D>::Sums>& mine, Wraps) {
     const auto& cells = in.cells;
     const std::size_t places = cells.pointCount();
-    const double* const volume = in.scratch.volume.data();
-    const double* const density = in.scratch.density.data();
     std::vector<std::uint32_t> neighbours(64);
     std::vector<double> unusedScratch;
     auto stencilCell = std::numeric_limits<std::uint32_t>::max();
     typename CellLinkedList<D>::StencilRanges stencil;
-    const double* const xs = places > 0 ? cells.sortedPosition(0).data() : nullptr;
 #pragma omp for schedule(static, 256)
     for (std::size_t k = 0; k < places; ++k) {
         if (cells.cellAt(k) != stencilCell) {
@@ -97,42 +93,17 @@ void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, const La
             stencil = cells.stencilRanges(cells.sortedPosition(k));
         }
         std::array<double, D> xk;
-        for (int d = 0; d < D; ++d) xk[d] = xs[k * D + d];
+        for (int d = 0; d < D; ++d) xk[d] = cells.sortedPosition(k)[d];
         const std::size_t count = cells.template listWithin<1, Wraps::value>(stencil, xk, in.radius * in.radius, k + 1, neighbours, unusedScratch);
-        const double volumeK = volume[k], densityK = density[k];
-        Matrix momentK = Matrix::Zero();
-        Vec<D> gradientK = Vec<D>::Zero(), lawK = Vec<D>::Zero(), differencesK = Vec<D>::Zero();
-        for (std::size_t q = 0; q < count; ++q) {
-            const std::size_t l = neighbours[q];
-            Vec<D> r;
-            for (int d = 0; d < D; ++d) r[d] = cells.template separation<Wraps::value>(xk[d] - xs[l * D + d], d);
-            const double distance = r.norm();
-            const Vec<D> Fr = kernel.gradientFactor(distance) * r;
-            const Vec<D> weightFr = law.pairWeight(kernel.value(distance) * in.inverseWdx) * Fr;
-            const Vec<D> differenceFr = (density[l] - densityK) * Fr;
-            momentK.noalias() -= (volume[l] * Fr) * r.transpose();
-            gradientK += volume[l] * Fr;
-            lawK += volume[l] * weightFr;
-            differencesK += volume[l] * differenceFr;
-            auto& atL = mine[l];
-            atL.moment.noalias() -= (volumeK * Fr) * r.transpose();
-            atL.gradient -= volumeK * Fr;
-            atL.law -= volumeK * weightFr;
-            atL.densityDifferences += volumeK * differenceFr;
-        }
-        auto& atK = mine[k];
-        atK.moment += momentK;
-        atK.gradient += gradientK;
-        atK.law += lawK;
-        atK.densityDifferences += differencesK;
+        addShiftingPairs<Wraps::value>(cells, kernel, in.scratch, k, xk, neighbours.data(), count, mine.data());
     }  // implicit barrier: every pair is in
 }
 
 // Pass 1 completed per particle: the threads' sums added, the walls', then the renormalised
 // density gradient, lambda_i and, at a free-surface particle, its outward normal. Inside the
 // parallel region.
-template <int D, class Kernel, class Law>
-void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel, const Law& law, std::size_t team) {
+template <int D, class Kernel>
+void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel) {
     using Matrix = Eigen::Matrix<double, D, D>;
     const auto& cells = in.cells;
     ParticleShiftingScratch<D>& scratch = in.scratch;
@@ -148,7 +119,7 @@ void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel, cons
                                                                  : typename CellLinkedList<D>::StencilRanges{};
         }
         typename ParticleShiftingScratch<D>::Sums total;
-        for (std::size_t t = 0; t < team; ++t) {
+        for (std::size_t t = 0; t < scratch.summingThreads; ++t) {
             const auto& part = scratch.sumsOfThread[t][k];
             total.moment += part.moment;
             total.gradient += part.gradient;
@@ -165,7 +136,7 @@ void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel, cons
             const Vec<D> VFr = (V * kernel.gradientFactor(distance)) * r;
             moment.noalias() -= VFr * r.transpose();
             gradient += VFr;
-            sum += law.pairWeight(kernel.value(distance) * in.inverseWdx) * VFr;
+            sum += scratch.weight(kernel.value(distance) * scratch.inverseWdx) * VFr;
             densityDifferences += (in.wallDensity[w] - in.rho[i]) * VFr;
             scratch.nearWall[i] = 1;
         });
@@ -244,9 +215,30 @@ void applyShift(const ShiftingViews<D>& in, const Law& law, double dt, double ma
 }  // namespace
 
 template <int D>
+bool FluidSystem<D>::stateAsShiftingSummed() const {
+    const ParticleShiftingScratch<D>& scratch = shiftingScratch_;
+    const CellLinkedList<D>& cells = fluidCells_;
+    const std::size_t places = cells.pointCount();
+    if (!scratch.summedByRates || places != fluid.size() || scratch.density.size() != places) return false;
+    const Vec<D>* x = fluid.position.data();
+    const double* rho = fluid[fields::density].data();
+    bool unchanged = true;
+#pragma omp parallel for reduction(&& : unchanged) schedule(static)
+    for (std::size_t k = 0; k < places; ++k) {
+        const std::size_t i = cells.sortedIndex(k);
+        unchanged = unchanged && x[i] == cells.sortedPosition(k) && rho[i] == scratch.density[k];
+    }
+    return unchanged;
+}
+
+template <int D>
 void FluidSystem<D>::shiftParticles(double dt) {
     auto timer = timers.time(Stage::Shifting);
-    fluidCells_.build(fluid.position);
+    // The force loop's pair sums hold where its evaluation saw this state (the last of a step,
+    // at its end, for every native integrator but leapfrog): the cells are then as it left them.
+    const bool summedByRates = stateAsShiftingSummed();
+    shiftingScratch_.summedByRates = false;
+    if (!summedByRates) fluidCells_.build(fluid.position);
     const std::size_t n = fluid.ownedCount();
     const Vec<D>* v = fluid[fields::velocity].data();
     double maxSpeed2 = 0.0;
@@ -270,8 +262,6 @@ void FluidSystem<D>::shiftParticles(double dt) {
                 ParticleShiftingScratch<D>& scratch = shiftingScratch_;
                 // Its table depends on the kernel alone: built at the first step that needs it.
                 if (oneLayerWalls && !scratch.outsideFraction) scratch.outsideFraction.emplace(kernel);
-                scratch.volume.resize(cells.pointCount());
-                scratch.density.resize(cells.pointCount());
                 scratch.outward.resize(n);
                 scratch.law.resize(n);
                 scratch.densityGradient.resize(n);
@@ -283,7 +273,6 @@ void FluidSystem<D>::shiftParticles(double dt) {
                                           scratch,
                                           n,
                                           supportRadius_,
-                                          1.0 / kernel.value(models_.shifting.dx),
                                           models_.shifting.dx,
                                           models_.shifting.surface,
                                           this->fluid.position.data(),
@@ -298,23 +287,30 @@ void FluidSystem<D>::shiftParticles(double dt) {
                                           continuity(),
                                           this->fluid[fields::shiftingVelocity].data(),
                                           this->fluid[fields::freeSurfaceLambda].data()};
+                if (!summedByRates) {
+                    scratch.volume.resize(cells.pointCount());
+                    scratch.density.resize(cells.pointCount());
 #pragma omp parallel for schedule(static)
-                for (std::size_t l = 0; l < cells.pointCount(); ++l) {
-                    const std::size_t j = cells.sortedIndex(l);
-                    in.scratch.volume[l] = in.m[j] / in.rho[j];
-                    in.scratch.density[l] = in.rho[j];
+                    for (std::size_t l = 0; l < cells.pointCount(); ++l) {
+                        const std::size_t j = cells.sortedIndex(l);
+                        in.scratch.volume[l] = in.m[j] / in.rho[j];
+                        in.scratch.density[l] = in.rho[j];
+                    }
+                    scratch.sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
                 }
-                auto& sumsOfThread = in.scratch.sumsOfThread;
-                sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel
                 {
-                    auto& mine = sumsOfThread[static_cast<std::size_t>(omp_get_thread_num())];
-                    mine.assign(cells.pointCount(), typename ParticleShiftingScratch<D>::Sums{});
-                    if (cells.anyPeriodic())
-                        sumShiftingPairs(in, kernel, law, mine, std::true_type{});
-                    else
-                        sumShiftingPairs(in, kernel, law, mine, std::false_type{});
-                    completeShiftingSums(in, kernel, law, static_cast<std::size_t>(omp_get_num_threads()));
+                    if (!summedByRates) {
+                        auto& mine = in.scratch.sumsOfThread[static_cast<std::size_t>(omp_get_thread_num())];
+                        mine.assign(cells.pointCount(), typename ParticleShiftingScratch<D>::Sums{});
+#pragma omp single
+                        in.scratch.summingThreads = static_cast<std::size_t>(omp_get_num_threads());  // implicit barrier
+                        if (cells.anyPeriodic())
+                            sumShiftingPairs(in, kernel, mine, std::true_type{});
+                        else
+                            sumShiftingPairs(in, kernel, mine, std::false_type{});
+                    }
+                    completeShiftingSums(in, kernel);
                 }
                 spreadSurfaceNormals(in, kernel);
                 applyShift(in, law, dt, maxSpeed);

@@ -5,6 +5,7 @@
 
 #include "core/Vector.hpp"
 #include "kernels/KernelOutsideFraction.hpp"
+#include "particleShifting/TensileShiftingWeight.hpp"
 
 #include <Eigen/Core>
 
@@ -23,6 +24,12 @@ struct ParticleShiftingScratch {
     };
     std::vector<std::vector<Sums>> sumsOfThread;  // in cell order
     std::vector<double> volume, density;          // in cell order
+    std::size_t summingThreads = 0;               // how many of sumsOfThread hold the last sums
+    // Set by an evaluation whose force loop took the pair sums (FluidRates.tpp), at the state it
+    // evaluated: the pass reuses them if the state has not changed since.
+    bool summedByRates = false;
+    TensileShiftingWeight weight;
+    double inverseWdx = 0.0;  // 1 / W(dx)
     std::vector<Vec<D>> outward, law, surfaceNormal, densityGradient;
     std::vector<char> nearWall;
     std::optional<KernelOutsideFraction<D>> outsideFraction;  // one-layer walls only

@@ -52,6 +52,10 @@ public:
     ParticleSet<D> fluid;
     ParticleSet<D> walls;
     StageTimers timers;  // an integrator times its own updates as Stage::Integrator
+    // True during the step's last evaluation when it is at the state the step ends with
+    // (TimeIntegrator::evaluateAtStepEnd): what the system computes from that state after the
+    // step may be taken in it (the shifting pass's pair sums, in the force loop).
+    bool evaluatingStepEnd = false;
 };
 
 }  // namespace sph

@@ -48,7 +48,7 @@ double PredictorCorrectorMonaghan1989<D>::takeStep(IntegrableSystem<D>& system, 
         for (std::size_t s = 0; s < densitySets.size(); ++s)
             extrapolate((*densitySets[s])[fields::density], start_.density[s], densitySets[s]->ownedCount());
     }
-    this->evaluate(system, t + dt);
+    this->evaluateAtStepEnd(system, t + dt);
     return dt;
 }
 

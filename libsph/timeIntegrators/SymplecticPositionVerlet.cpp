@@ -48,7 +48,7 @@ double SymplecticPositionVerlet<D>::takeStep(IntegrableSystem<D>& system, double
                            densitySets[s]->ownedCount());
         system.correctBodies(dt);
     }
-    this->evaluate(system, t + dt);
+    this->evaluateAtStepEnd(system, t + dt);
     return dt;
 }
 

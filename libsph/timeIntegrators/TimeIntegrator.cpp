@@ -27,6 +27,18 @@ void TimeIntegrator<D>::evaluate(IntegrableSystem<D>& system, double t, RateTerm
 }
 
 template <int D>
+void TimeIntegrator<D>::evaluateAtStepEnd(IntegrableSystem<D>& system, double t) {
+    system.evaluatingStepEnd = true;
+    try {
+        evaluate(system, t);
+    } catch (...) {
+        system.evaluatingStepEnd = false;
+        throw;
+    }
+    system.evaluatingStepEnd = false;
+}
+
+template <int D>
 std::vector<std::pair<std::string, long>> TimeIntegrator<D>::counters() const {
     return {{"steps", steps_}, {"right-hand-side evaluations", evaluations_}};
 }

@@ -62,6 +62,8 @@ protected:
     virtual double takeStep(IntegrableSystem<D>& system, double t, double dt) = 0;
     void evaluate(IntegrableSystem<D>& system, double t);
     void evaluate(IntegrableSystem<D>& system, double t, RateTerms terms);
+    // The step's last evaluation, at the state the step ends with (its positions and densities).
+    void evaluateAtStepEnd(IntegrableSystem<D>& system, double t);
     long steps() const { return steps_; }
 
 private:

@@ -55,7 +55,7 @@ double VerletMonaghan1994<D>::takeStep(IntegrableSystem<D>& system, double t, do
             }
         }
     }
-    this->evaluate(system, t + dt);
+    this->evaluateAtStepEnd(system, t + dt);
     return dt;
 }
 

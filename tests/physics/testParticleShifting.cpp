@@ -3,7 +3,7 @@
 // out here, nothing on a uniform lattice, a random lattice evened out, a flat free surface
 // detected (lambda ~ 1/2, as computed apart for the lattice) and never crossed, walls
 // of wall particles and one-layer walls both completing the sums, a one-layer wall never
-// approached.
+// approached, the force loop's pair sums taken only at the state they were taken at.
 #include "boundaryModels/RepulsiveWall.hpp"
 #include "physics/FluidSystem.hpp"
 
@@ -121,7 +121,7 @@ TEST(ShiftingSun2017, PairWeightTakesThePowerOfAnyExponent) {
     for (int n = 0; n <= 7; ++n) {
         const ShiftingSun2017 law(0.2, n, h);
         for (const double w : {0.0, 0.37, 1.0, 1.6})
-            EXPECT_NEAR(law.pairWeight(w), 1.0 + 0.2 * std::pow(w, n), 1e-15 * (1.0 + 0.2 * std::pow(w, n))) << "n " << n << ", w " << w;
+            EXPECT_NEAR(law.pairWeight()(w), 1.0 + 0.2 * std::pow(w, n), 1e-15 * (1.0 + 0.2 * std::pow(w, n))) << "n " << n << ", w " << w;
     }
 }
 
@@ -150,6 +150,62 @@ TEST(ParticleShifting, EvensOutARandomLattice) {
             s->wrapPeriodic();
         }
         EXPECT_LT(spread(), 0.3 * before) << describe(shifting);
+    }
+}
+
+TEST(ParticleShifting, TakesTheForceLoopsSumsOnlyAtTheStateTheyWereTakenAt) {
+    // A jiggled block with a free surface on three layers of wall particles (periodic in x). A
+    // step's last evaluation takes the pass's pair sums in its force loop: the shift from them is
+    // the pass's own (after an evaluation that does not). After a particle moved, or its density
+    // changed, since the evaluation, the pass sums the pairs itself: the shift is the one
+    // computed at the changed state alone.
+    const std::size_t changed = 5 * 20 + 7;
+    for (const ParticleShifting& shifting : {sun(), lind()}) {
+        const auto jiggled = [&] {
+            auto s = system(lattice(20, 10), floorOf(20, 3), 20, shifting);
+            std::mt19937 random(5);
+            std::uniform_real_distribution<double> unit(-1.0, 1.0);
+            for (std::size_t i = 0; i < s->fluid.size(); ++i) {
+                s->fluid.position[i] += 0.2 * dx * Vec<2>(unit(random), unit(random));
+                s->fluid[fields::density][i] = rho0 * (1.0 + 0.01 * unit(random));
+            }
+            return s;
+        };
+        const auto shiftOf = [](FluidSystem<2>& s) {
+            s.shiftParticles(1e-4);
+            return s.fluid[fields::shiftingVelocity];
+        };
+        const auto largestDifference = [](const std::vector<Vec<2>>& a, const std::vector<Vec<2>>& b) {
+            double largest = 0.0;
+            for (std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, (a[i] - b[i]).norm());
+            return largest;
+        };
+        auto fromForceLoop = jiggled(), ownSums = jiggled();
+        fromForceLoop->evaluatingStepEnd = true;  // as an integrator's last evaluation
+        fromForceLoop->evaluateRates(0.0);
+        ownSums->evaluateRates(0.0);  // not at a step's end: without the sums
+        const auto own = shiftOf(*ownSums);
+        double largest = 0.0;
+        for (const Vec<2>& u : own) largest = std::max(largest, u.norm());
+        ASSERT_GT(largest, 0.01) << describe(shifting);
+        EXPECT_LT(largestDifference(shiftOf(*fromForceLoop), own), 1e-12 * largest) << describe(shifting);
+
+        for (const bool moved : {true, false}) {
+            const auto change = [&](FluidSystem<2>& s) {
+                if (moved)
+                    s.fluid.position[changed] += Vec<2>(0.1 * dx, 0.05 * dx);
+                else
+                    s.fluid[fields::density][changed] *= 1.02;
+            };
+            auto stale = jiggled(), fresh = jiggled();
+            stale->evaluatingStepEnd = true;
+            stale->evaluateRates(0.0);
+            change(*stale);
+            change(*fresh);
+            const auto expected = shiftOf(*fresh);
+            EXPECT_GT(largestDifference(expected, own), 1e-3 * largest) << "the change is felt";
+            EXPECT_LT(largestDifference(shiftOf(*stale), expected), 1e-12 * largest) << describe(shifting) << (moved ? ", moved" : ", denser");
+        }
     }
 }
 

@@ -1,0 +1,59 @@
+// A particle's particle-shifting sums over its later neighbours in cell order, each pair once:
+// the moment matrix and concentration gradient of FreeSurfaceMarrone2010.hpp, the law's sum
+// (TensileShiftingWeight.hpp) and the density differences of the renormalised density gradient.
+// What k receives is summed in registers and added once; what each neighbour receives is added
+// to its place. A pair's terms are the same for both particles but for the other's volume and the
+// gradient's sign. The shifting pass (ParticleShiftingPass.tpp) calls it on the lists it makes;
+// the force loop (FluidRates.tpp), where an evaluation is asked for the sums, on the lists it has.
+#pragma once
+
+#include "neighbourSearch/CellLinkedList.hpp"
+#include "particleShifting/TensileShiftingWeight.hpp"
+#include "physics/ParticleShiftingScratch.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace sph {
+
+// Flattened: called from two loops, GCC left Eigen's 3D products out of line, one call per
+// pair and term (the 3D benchmark's sums took twice the time).
+template <bool Wraps, int D, class Kernel>
+[[gnu::flatten]] void addShiftingPairs(const CellLinkedList<D>& cells, const Kernel& kernel, const ParticleShiftingScratch<D>& scratch, std::size_t k,
+                                       const std::array<double, std::size_t{D}>& xk, const std::uint32_t* listed, std::size_t count,
+                                       typename ParticleShiftingScratch<D>::Sums* sums) {
+    using Matrix = Eigen::Matrix<double, D, D>;
+    const double* const volume = scratch.volume.data();
+    const double* const density = scratch.density.data();
+    const double* const xs = cells.sortedPosition(0).data();
+    const TensileShiftingWeight weight = scratch.weight;
+    const double inverseWdx = scratch.inverseWdx;
+    const double volumeK = volume[k], densityK = density[k];
+    Matrix momentK = Matrix::Zero();
+    Vec<D> gradientK = Vec<D>::Zero(), lawK = Vec<D>::Zero(), differencesK = Vec<D>::Zero();
+    for (std::size_t q = 0; q < count; ++q) {
+        const std::size_t l = listed[q];
+        Vec<D> r;
+        for (int d = 0; d < D; ++d) r[d] = cells.template separation<Wraps>(xk[d] - xs[l * D + d], d);
+        const double distance = r.norm();
+        const Vec<D> Fr = kernel.gradientFactor(distance) * r;
+        const Vec<D> weightFr = weight(kernel.value(distance) * inverseWdx) * Fr;
+        const Vec<D> differenceFr = (density[l] - densityK) * Fr;
+        momentK.noalias() -= (volume[l] * Fr) * r.transpose();
+        gradientK += volume[l] * Fr;
+        lawK += volume[l] * weightFr;
+        differencesK += volume[l] * differenceFr;
+        auto& atL = sums[l];
+        atL.moment.noalias() -= (volumeK * Fr) * r.transpose();
+        atL.gradient -= volumeK * Fr;
+        atL.law -= volumeK * weightFr;
+        atL.densityDifferences += volumeK * differenceFr;
+    }
+    auto& atK = sums[k];
+    atK.moment += momentK;
+    atK.gradient += gradientK;
+    atK.law += lawK;
+    atK.densityDifferences += differencesK;
+}
+
+}  // namespace sph
