@@ -9,7 +9,8 @@
 // adds gravity and the fluid-wall terms, and writes the rates in storage order. Summation order
 // depends on the thread count (rates agree to round-off, not bit for bit). In a step's last
 // evaluation with particle shifting, each particle's pair loop is followed by the shifting pass's
-// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair.
+// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair. With
+// delta-SPH the pass reads the moment and density differences from its gradient sums.
 #include "physics/FluidPairTerms.hpp"
 #include "physics/ShiftingPairSums.hpp"
 
@@ -82,6 +83,7 @@ public:
             shifting_->volume.resize(n_);
             shifting_->density.resize(n_);
             shifting_->sumsOfThread.resize(threads);
+            shifting_->momentSumsOfThread = Terms::densityGradient ? &ordered.gradientSums : nullptr;
         }
         // A copy's shifting sums are read (its free-surface normal reaches the owned particles
         // near it): with them, every pair counts.
@@ -364,7 +366,7 @@ private:
                 }
             }
             if constexpr (lanes > 1) addWhatNeighboursReceived(count);
-            if (shifting_) addShiftingPairs<Wraps::value>(cells_, kernel, *shifting_, k, xk, listed, count, shiftingSums_);
+            if (shifting_) addShiftingPairs<Wraps::value, !Terms::densityGradient>(cells_, kernel, *shifting_, k, xk, listed, count, shiftingSums_);
             as[k * D] += a0;
             if constexpr (D > 1) as[k * D + 1] += a1;
             if constexpr (D > 2) as[k * D + 2] += a2;

@@ -5,7 +5,8 @@
 //                gradient of FreeSurfaceMarrone2010.hpp (lambda_i, n_i) and the law's sum
 //                (FickianShiftingLind2012.hpp, ShiftingSun2017.hpp), walls completing them.
 //                The pairs' sums are the force loop's where the step's last evaluation took
-//                them at the state the pass reads (FluidRates.tpp): it lists the pairs anyway
+//                them at the state the pass reads (FluidRates.tpp): it lists the pairs anyway;
+//                with delta-SPH, the moment and density differences are its gradient pass's
 //   2. surface   each particle within the support of a free-surface particle takes the mean of
 //                their normals (free-surface particles are few: serial)
 //   3. shift     the law's velocity; near the free surface its component along that normal removed;
@@ -95,7 +96,7 @@ void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, std::vec
         std::array<double, D> xk;
         for (int d = 0; d < D; ++d) xk[d] = cells.sortedPosition(k)[d];
         const std::size_t count = cells.template listWithin<1, Wraps::value>(stencil, xk, in.radius * in.radius, k + 1, neighbours, unusedScratch);
-        addShiftingPairs<Wraps::value>(cells, kernel, in.scratch, k, xk, neighbours.data(), count, mine.data());
+        addShiftingPairs<Wraps::value, true>(cells, kernel, in.scratch, k, xk, neighbours.data(), count, mine.data());
     }  // implicit barrier: every pair is in
 }
 
@@ -121,10 +122,16 @@ void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel) {
         typename ParticleShiftingScratch<D>::Sums total;
         for (std::size_t t = 0; t < scratch.summingThreads; ++t) {
             const auto& part = scratch.sumsOfThread[t][k];
-            total.moment += part.moment;
             total.gradient += part.gradient;
             total.law += part.law;
-            total.densityDifferences += part.densityDifferences;
+            if (scratch.momentSumsOfThread) {
+                const double* const sums = (*scratch.momentSumsOfThread)[t].data() + k * (D * D + D);
+                total.moment += Eigen::Map<const Matrix>(sums);
+                total.densityDifferences += Eigen::Map<const Vec<D>>(sums + D * D);
+            } else {
+                total.moment += part.moment;
+                total.densityDifferences += part.densityDifferences;
+            }
         }
         Matrix& moment = total.moment;
         Vec<D>& gradient = total.gradient;
@@ -297,6 +304,7 @@ void FluidSystem<D>::shiftParticles(double dt) {
                         in.scratch.density[l] = in.rho[j];
                     }
                     scratch.sumsOfThread.resize(static_cast<std::size_t>(omp_get_max_threads()));
+                    scratch.momentSumsOfThread = nullptr;
                 }
 #pragma omp parallel
                 {

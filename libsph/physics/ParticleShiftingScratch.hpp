@@ -28,6 +28,9 @@ struct ParticleShiftingScratch {
     // Set by an evaluation whose force loop took the pair sums (FluidRates.tpp), at the state it
     // evaluated: the pass reuses them if the state has not changed since.
     bool summedByRates = false;
+    // Where the force loop left the moment and density-difference sums in delta-SPH's per-thread
+    // gradient sums (D x D + D per place, the same sums): null where they are in sumsOfThread.
+    const std::vector<std::vector<double>>* momentSumsOfThread = nullptr;
     TensileShiftingWeight weight;
     double inverseWdx = 0.0;  // 1 / W(dx)
     std::vector<Vec<D>> outward, law, surfaceNormal, densityGradient;

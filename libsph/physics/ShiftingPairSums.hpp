@@ -4,7 +4,8 @@
 // What k receives is summed in registers and added once; what each neighbour receives is added
 // to its place. A pair's terms are the same for both particles but for the other's volume and the
 // gradient's sign. The shifting pass (ParticleShiftingPass.tpp) calls it on the lists it makes;
-// the force loop (FluidRates.tpp), where an evaluation is asked for the sums, on the lists it has.
+// the force loop (FluidRates.tpp), where an evaluation is asked for the sums, on the lists it has,
+// without the moment and density differences where delta-SPH's gradient pass summed them.
 #pragma once
 
 #include "neighbourSearch/CellLinkedList.hpp"
@@ -18,7 +19,7 @@ namespace sph {
 
 // Flattened: called from two loops, GCC left Eigen's 3D products out of line, one call per
 // pair and term (the 3D benchmark's sums took twice the time).
-template <bool Wraps, int D, class Kernel>
+template <bool Wraps, bool WithMoment, int D, class Kernel>
 [[gnu::flatten]] void addShiftingPairs(const CellLinkedList<D>& cells, const Kernel& kernel, const ParticleShiftingScratch<D>& scratch, std::size_t k,
                                        const std::array<double, std::size_t{D}>& xk, const std::uint32_t* listed, std::size_t count,
                                        typename ParticleShiftingScratch<D>::Sums* sums) {
@@ -38,22 +39,26 @@ template <bool Wraps, int D, class Kernel>
         const double distance = r.norm();
         const Vec<D> Fr = kernel.gradientFactor(distance) * r;
         const Vec<D> weightFr = weight(kernel.value(distance) * inverseWdx) * Fr;
-        const Vec<D> differenceFr = (density[l] - densityK) * Fr;
-        momentK.noalias() -= (volume[l] * Fr) * r.transpose();
         gradientK += volume[l] * Fr;
         lawK += volume[l] * weightFr;
-        differencesK += volume[l] * differenceFr;
         auto& atL = sums[l];
-        atL.moment.noalias() -= (volumeK * Fr) * r.transpose();
         atL.gradient -= volumeK * Fr;
         atL.law -= volumeK * weightFr;
-        atL.densityDifferences += volumeK * differenceFr;
+        if constexpr (WithMoment) {
+            const Vec<D> differenceFr = (density[l] - densityK) * Fr;
+            momentK.noalias() -= (volume[l] * Fr) * r.transpose();
+            differencesK += volume[l] * differenceFr;
+            atL.moment.noalias() -= (volumeK * Fr) * r.transpose();
+            atL.densityDifferences += volumeK * differenceFr;
+        }
     }
     auto& atK = sums[k];
-    atK.moment += momentK;
     atK.gradient += gradientK;
     atK.law += lawK;
-    atK.densityDifferences += differencesK;
+    if constexpr (WithMoment) {
+        atK.moment += momentK;
+        atK.densityDifferences += differencesK;
+    }
 }
 
 }  // namespace sph

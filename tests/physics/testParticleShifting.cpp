@@ -55,7 +55,7 @@ ParticleSet<2> floorOf(int nx, int layers) {
 
 // Periodic in x over nx dx; y from -0.2 to 1; no gravity. A one-layer floor is a wall-force patch.
 std::unique_ptr<FluidSystem<2>> system(ParticleSet<2> fluid, ParticleSet<2> walls, int nx, ParticleShifting shifting, bool oneLayerFloor = false,
-                                       bool periodicY = false, double height = 1.0) {
+                                       bool periodicY = false, double height = 1.0, DensityDiffusion<2> diffusion = NoDensityDiffusion{}) {
     std::vector<Patch<2>> patches;
     if (oneLayerFloor) {
         patches.resize(1);
@@ -63,8 +63,7 @@ std::unique_ptr<FluidSystem<2>> system(ParticleSet<2> fluid, ParticleSet<2> wall
         patches[0].end = walls.size();
         patches[0].model = std::make_unique<RepulsiveWall<2>>(MonaghanKajtar2009{1e-12, dx, 0.0, 0.0});
     }
-    FluidModels<2> models{WendlandC2<2>(h),     LinearEquationOfState(rho0, c0, 0.0), NoViscosity{},
-                          NoDensityDiffusion{}, DensityFormulation::Continuity,       shifting};
+    FluidModels<2> models{WendlandC2<2>(h), LinearEquationOfState(rho0, c0, 0.0), NoViscosity{}, diffusion, DensityFormulation::Continuity, shifting};
     return std::make_unique<FluidSystem<2>>(std::move(models), std::move(fluid), std::move(walls), std::move(patches),
                                             Vec<2>(0.0, periodicY ? 0.0 : -0.2), Vec<2>(nx * dx, periodicY ? height : 1.0), Vec<2>::Zero(), 0.0,
                                             std::array<bool, 2>{true, periodicY});
@@ -158,11 +157,13 @@ TEST(ParticleShifting, TakesTheForceLoopsSumsOnlyAtTheStateTheyWereTakenAt) {
     // step's last evaluation takes the pass's pair sums in its force loop: the shift from them is
     // the pass's own (after an evaluation that does not). After a particle moved, or its density
     // changed, since the evaluation, the pass sums the pairs itself: the shift is the one
-    // computed at the changed state alone.
+    // computed at the changed state alone. With delta-SPH, the loop's moment and density
+    // differences are its gradient pass's.
     const std::size_t changed = 5 * 20 + 7;
-    for (const ParticleShifting& shifting : {sun(), lind()}) {
+    for (const auto& [shifting, diffusion] : std::vector<std::pair<ParticleShifting, DensityDiffusion<2>>>{
+             {sun(), NoDensityDiffusion{}}, {lind(), NoDensityDiffusion{}}, {sun(), Antuono2010(0.1, h, c0)}}) {
         const auto jiggled = [&] {
-            auto s = system(lattice(20, 10), floorOf(20, 3), 20, shifting);
+            auto s = system(lattice(20, 10), floorOf(20, 3), 20, shifting, false, false, 1.0, diffusion);
             std::mt19937 random(5);
             std::uniform_real_distribution<double> unit(-1.0, 1.0);
             for (std::size_t i = 0; i < s->fluid.size(); ++i) {
