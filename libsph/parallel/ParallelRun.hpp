@@ -10,13 +10,13 @@
 // (fluid_<r>.vtu, ...), listed in the case's .pvd; -rates writes the same to
 // postProcessing/rates/<time>/. A run restarts from pieces or a serial state, on any number of
 // ranks (io/ParticleState).
-// So far (issue 23): the native integrators; dynamicBoundary, dummyParticles and
-// deficiencyCorrection walls, fixed or with a prescribed motion (halos as wide as
-// BoundaryModel::reach); continuity or summation density; periodic directions; any kernel,
-// viscosity and density diffusion; particle shifting. Not yet: free bodies, SUNDIALS, other wall
-// models. Anything else stops before the first step, naming what does not run on several
-// ranks yet. Every rank reads the whole start state. The boxes are made again when the ranks'
-// measured work drifts apart (CostBalance).
+// So far (issue 23): the native integrators; every boundary model, walls fixed, with a
+// prescribed motion or free bodies (halos as wide as BoundaryModel::reach; a free body's loads
+// summed in the serial order); continuity or summation density; periodic directions; any
+// kernel, viscosity and density diffusion; particle shifting. Not yet: the SUNDIALS integrators,
+// which stop before the first step, naming what does not run on several ranks yet. Every rank
+// reads the whole start state. The boxes are made again when the ranks' measured work drifts
+// apart (CostBalance).
 #pragma once
 
 #include "driver/Simulation.hpp"
