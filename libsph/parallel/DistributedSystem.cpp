@@ -4,8 +4,11 @@
 #include "parallel/ParticleMigration.hpp"
 #include "parallel/RcbPartition.hpp"
 
+#include <nvector/nvector_mpimanyvector.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -19,6 +22,15 @@ std::vector<std::uint32_t> ownedPlaces(const std::vector<char>& owned) {
     for (std::size_t i = 0; i < owned.size(); ++i)
         if (owned[i]) places.push_back(static_cast<std::uint32_t>(i));
     return places;
+}
+
+// The global ids of the particles a rank owns, in their order.
+template <int D>
+std::vector<std::int64_t> ownedIds(const ParticleSet<D>& set, const std::vector<char>& owned) {
+    std::vector<std::int64_t> ids;
+    for (std::size_t i = 0; i < set.size(); ++i)
+        if (owned[i]) ids.push_back(set.globalId[i]);
+    return ids;
 }
 
 // The farthest any selected model reads from an owned particle: the kernel support, twice it
@@ -91,7 +103,7 @@ void DistributedSystem<D>::partition(const std::vector<std::uint32_t>& fluid, co
 template <int D>
 void DistributedSystem<D>::repartition(double weightPerParticle) {
     partition(ownedPlaces(fluidOwned_), ownedPlaces(wallsOwned_), weightPerParticle);
-    redistributeParticles(true, true);
+    (void)redistributeParticles(true, true);
 }
 
 template <int D>
@@ -130,27 +142,32 @@ void DistributedSystem<D>::numberByCell(ParticleSet<D>& fluid) const {
 }
 
 template <int D>
-void DistributedSystem<D>::redistribute(bool sortByCell) {
-    redistributeParticles(sortByCell, wallsMove_);
+bool DistributedSystem<D>::redistribute(bool sortByCell) {
+    return redistributeParticles(sortByCell, wallsMove_);
 }
 
 template <int D>
-void DistributedSystem<D>::redistributeParticles(bool sortByCell, bool walls) {
+bool DistributedSystem<D>::redistributeParticles(bool sortByCell, bool walls) {
     ParticleSet<D>& fluid = system_.fluid;
+    const std::vector<std::int64_t> fluidBefore = ownedIds(fluid, fluidOwned_);
     fluid.keep(ownedPlaces(fluidOwned_));
     migrateParticles(ranks_, fluid, boxes_);
     if (sortByCell) numberByCell(fluid);
     fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
     positionsAtRedistribution_ = fluid.position;
-    if (!walls) return;
+    bool ownedChanged = ownedIds(fluid, fluidOwned_) != fluidBefore;
+    if (!walls) return ownedChanged;
     // Moving walls go where the fluid goes (and every wall after a repartition); the patches'
     // ranges follow.
     ParticleSet<D> wallSet = system_.walls;
+    const std::vector<std::int64_t> wallsBefore = ownedIds(wallSet, wallsOwned_);
     wallSet.keep(ownedPlaces(wallsOwned_));
     migrateParticles(ranks_, wallSet, boxes_);
     wallHalos_.emplace(shareWithNeighbours(wallSet, wallsOwned_));
+    ownedChanged = ownedChanged || ownedIds(wallSet, wallsOwned_) != wallsBefore;
     system_.adoptParticles(std::move(system_.fluid), std::move(wallSet));
     wallPositionsAtRedistribution_ = system_.walls.position;
+    return ownedChanged;
 }
 
 template <int D>
@@ -199,8 +216,10 @@ template <int D>
 void DistributedSystem<D>::refreshShifted() {
     timed([this] {
         ParticleSet<D>& fluid = system_.fluid;
-        if (system_.continuity()) fluidHalos_->refresh(fluid, fields::density);
-        fluidHalos_->refreshPositions(fluid);
+        if (system_.continuity())
+            fluidHalos_->refreshPositions(fluid, fields::density);
+        else
+            fluidHalos_->refreshPositions(fluid);
     });
 }
 
@@ -268,6 +287,7 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
     const bool copiesRatesRead =
         std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.model->needsUncorrectedAcceleration(); });
     if (!copiesRatesRead) system.ratesWanted = &fluidOwned_;
+    shareStateWithSundials();
     system.afterRates = [this] {
         timed([this] {
             if (system_.continuity())
@@ -277,6 +297,34 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
             if (system_.wallDensityEvolves()) wallHalos_->refresh(system_.walls, fields::densityRate);
         });
     };
+}
+
+template <int D>
+void DistributedSystem<D>::shareStateWithSundials() {
+    StateOverRanks& state = stateOverRanks_;
+    state.fluidOwned = &fluidOwned_;
+    state.wallsOwned = &wallsOwned_;
+    state.refreshCopies = [this] {
+        timed([this] {
+            ParticleSet<D>& fluid = system_.fluid;
+            if (system_.continuity())
+                fluidHalos_->refreshPositions(fluid, fields::velocity, fields::density);
+            else
+                fluidHalos_->refreshPositions(fluid, fields::velocity);
+            if (system_.wallDensityEvolves()) wallHalos_->refresh(system_.walls, fields::density);
+        });
+    };
+    state.onAnyRank = [this](bool value) { return ranks_.maxOverRanks(value ? 1.0 : 0.0) > 0.0; };
+    state.join = [this](std::vector<N_Vector>& parts, SUNContext context) {
+        return N_VMake_MPIManyVector(ranks_.handle(), static_cast<sunindextype>(parts.size()), parts.data(), context);
+    };
+    state.subvectorData = N_VGetSubvectorArrayPointer_MPIManyVector;
+    state.stopAll = [this](const std::string& message) {
+        std::fprintf(stderr, "rank %d of %d: %s\n", ranks_.rank(), ranks_.size(), message.c_str());
+        std::fflush(stderr);
+        MPI_Abort(ranks_.handle(), 1);
+    };
+    system_.stateOverRanks = &stateOverRanks_;
 }
 
 #define SPHKIT_INSTANTIATE(D) template class DistributedSystem<D>;

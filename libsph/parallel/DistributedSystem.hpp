@@ -10,9 +10,10 @@
 // (DomainBoxes::alignToCells), so it holds all of a cell's particles when it numbers them. The
 // walls never move: their order is their place in the state file.
 //
-// Between two redistributions the copies are advanced by the integrator like their owners, with
-// their owners' rates (refreshed at the end of each evaluation), so they stay equal to them
-// without resending the state; the copies' summed density and wall state are refreshed where
+// Between two redistributions the copies are advanced by a native integrator like their owners,
+// with their owners' rates (refreshed at the end of each evaluation), so they stay equal to them
+// without resending the state (a SUNDIALS integrator advances the owned particles only and sends
+// the copies their state before each evaluation: StateOverRanks); the copies' summed density and wall state are refreshed where
 // they are computed. A copy's own rates miss the neighbours beyond the halo and are never used:
 // the pair loop skips the pairs of two copies (FluidSystem::ratesWanted) unless a model reads
 // them within the evaluation.
@@ -22,6 +23,7 @@
 #include "parallel/DomainBoxes.hpp"
 #include "parallel/HaloExchange.hpp"
 #include "physics/FluidSystem.hpp"
+#include "timeIntegrators/StateOverRanks.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -43,8 +45,9 @@ public:
 
     // Collective. Every fluid particle (and wall particle of a moving patch) to the rank that
     // owns its cell now, and new halos; `sortByCell` where the serial run sorts its fluid by cell
-    // (new order numbers; walls keep theirs).
-    void redistribute(bool sortByCell);
+    // (new order numbers; walls keep theirs). Returns whether the particles this rank owns, or
+    // their order, changed.
+    [[nodiscard]] bool redistribute(bool sortByCell);
 
     // Collective. New boxes, each owned particle weighing weightPerParticle (a wall
     // wallWeight times that): a rank passes its measured cost per particle, so that the next
@@ -85,7 +88,7 @@ private:
     // Boxes from the particles at the given places (each rank passes its own), fluid weighing
     // weightPerParticle, walls wallWeight_ times that.
     void partition(const std::vector<std::uint32_t>& fluid, const std::vector<std::uint32_t>& walls, double weightPerParticle);
-    void redistributeParticles(bool sortByCell, bool walls);
+    [[nodiscard]] bool redistributeParticles(bool sortByCell, bool walls);
     static std::size_t ownedCount(const std::vector<char>& owned) { return static_cast<std::size_t>(std::count(owned.begin(), owned.end(), 1)); }
     static ParticleSet<D> selected(const ParticleSet<D>& set, const std::vector<char>& owned);
     // Copies of the others' particles within the halo width, the set's particles (owned ones
@@ -93,6 +96,8 @@ private:
     HaloExchange<D> shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned);
     void numberByCell(ParticleSet<D>& fluid) const;
     void refreshWithinEvaluations();
+    // What the SUNDIALS integrators need to advance this rank's share (StateOverRanks).
+    void shareStateWithSundials();
     std::vector<BodyLoadShare<D>> bodyLoadSharesOfAllRanks(const std::vector<BodyLoadShare<D>>& mine) const;
     template <class Exchange>
     void timed(Exchange&& exchange);
@@ -108,6 +113,7 @@ private:
     std::optional<HaloExchange<D>> fluidHalos_, wallHalos_;
     std::vector<Vec<D>> positionsAtRedistribution_, wallPositionsAtRedistribution_;
     double exchangeSeconds_ = 0.0;
+    StateOverRanks stateOverRanks_;
 };
 
 }  // namespace sph::parallel

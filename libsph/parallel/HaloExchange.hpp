@@ -28,7 +28,11 @@ public:
     void refresh(ParticleSet<D>& set, Keys... keys) const {
         exchange({bytesOf(set[keys])...});
     }
-    void refreshPositions(ParticleSet<D>& set) const { exchange({bytesOf(set.position)}); }
+    // The positions and `fields`, in one message per neighbour.
+    template <class... Keys>
+    void refreshPositions(ParticleSet<D>& set, Keys... keys) const {
+        exchange({bytesOf(set.position), bytesOf(set[keys])...});
+    }
 
     // After set.keep(order) on the set the exchange filled (owned particles and copies mixed, in
     // another order): the lists follow the particles to their new places.

@@ -31,8 +31,6 @@ namespace sph::parallel {
 
 namespace {
 
-constexpr std::array nativeIntegrators{"symplectic", "verlet", "leapfrog", "predictorCorrector"};
-
 // A directory every rank writes into: rank 0 makes it under a temporary name and moves it into
 // place once all have written, so that a reader sees no directory or the complete one.
 template <class Write>
@@ -150,14 +148,6 @@ void printTimePerPart(const Communicator& ranks, const FluidSystem<D>& system, c
 }
 
 template <int D>
-void requireSupported(const CaseSetup<D>& setup, RunMode mode) {
-    if (mode == RunMode::TimeLoop && std::find(nativeIntegrators.begin(), nativeIntegrators.end(), setup.integratorType) == nativeIntegrators.end())
-        throw FatalError(
-            "error: wcsph -parallel does not run the integrator " + setup.integratorType +
-            " (so far symplectic, verlet, leapfrog and predictorCorrector) on several ranks yet (issue 23); run the case without -parallel");
-}
-
-template <int D>
 void writeRates(const Communicator& ranks, const std::filesystem::path& caseDirectory, CaseSetup<D>& setup, const DistributedSystem<D>& shared) {
     const double t = setup.header.time;
     setup.system->evaluateRates(t);
@@ -227,16 +217,20 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     while (true) {
         const double timeTolerance = 1e-9 * controls.writeInterval;
         if (t >= controls.endTime - timeTolerance) break;
-        const bool sortByCell = step % stepsBetweenCellSorts == 0;
+        const bool sortByCell = integrator.allowsReordering() && step % stepsBetweenCellSorts == 0;
         if (sortByCell || agreed.displacement > 0.25 * shared.skin()) {
             const auto begin = std::chrono::steady_clock::now();
             const auto repartition = sortByCell ? balance.check(ranks, step, workSeconds(system.timers), shared.ownedWeight()) : std::nullopt;
+            // The SUNDIALS integrators restart where the particles a rank owns changed (and
+            // where the serial run restarts, at the sort): their vector holds those.
+            bool ownedChanged = true;
             if (repartition) {
                 shared.repartition(repartition->weightPerParticle);
                 fmt::print("Repartitioned at step {}: the slowest rank's work was {:.3f} times the mean\n", step, repartition->imbalance);
             } else {
-                shared.redistribute(sortByCell);
+                ownedChanged = shared.redistribute(sortByCell);
             }
+            if (sortByCell || ownedChanged) integrator.stateChangedOutside();
             buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         }
         const double target = std::min(nextWrite, controls.endTime);
@@ -245,8 +239,9 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         if (system.shiftsParticles()) {
             system.shiftParticles(taken);
             shared.refreshShifted();
+            integrator.stateChangedOutside();
         }
-        system.wrapPeriodic();
+        if (system.wrapPeriodic()) integrator.stateChangedOutside();
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;
 
@@ -298,7 +293,6 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
                     RunMode mode, std::optional<int> threads, double balanceThreshold) {
     CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
-    requireSupported(setup, mode);
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;
     std::optional<GatheredFunctionObjects<D>> functionObjects;

@@ -10,13 +10,13 @@
 // (fluid_<r>.vtu, ...), listed in the case's .pvd; -rates writes the same to
 // postProcessing/rates/<time>/. A run restarts from pieces or a serial state, on any number of
 // ranks (io/ParticleState).
-// So far (issue 23): the native integrators; every boundary model, walls fixed, with a
-// prescribed motion or free bodies (halos as wide as BoundaryModel::reach; a free body's loads
-// summed in the serial order); continuity or summation density; periodic directions; any
-// kernel, viscosity and density diffusion; particle shifting. Not yet: the SUNDIALS integrators,
-// which stop before the first step, naming what does not run on several ranks yet. Every rank
-// reads the whole start state. The boxes are made again when the ranks' measured work drifts
-// apart (CostBalance).
+// Every integrator: the native ones, and the SUNDIALS ones on an MPI ManyVector of the owned
+// particles (StateOverRanks; they restart where the particles a rank owns change, and where the
+// serial run restarts); every boundary model, walls fixed, with a prescribed motion or free
+// bodies (halos as wide as BoundaryModel::reach; a free body's loads summed in the serial order);
+// continuity or summation density; periodic directions; any kernel, viscosity and density
+// diffusion; particle shifting. Every rank reads the whole start state (issue 23). The boxes are
+// made again when the ranks' measured work drifts apart (CostBalance).
 #pragma once
 
 #include "driver/Simulation.hpp"

@@ -15,6 +15,8 @@
 
 namespace sph {
 
+struct StateOverRanks;
+
 // Which terms an evaluation computes. An implicit-explicit integrator splits the right-hand
 // side: the viscous acceleration (implicit) apart from everything else (explicit).
 enum class RateTerms { All, AllButViscous, ViscousOnly };
@@ -56,6 +58,9 @@ public:
     // (TimeIntegrator::evaluateAtStepEnd): what the system computes from that state after the
     // step may be taken in it (the shifting pass's pair sums, in the force loop).
     bool evaluatingStepEnd = false;
+    // Set where the state is shared over ranks (parallel/DistributedSystem), for the SUNDIALS
+    // integrators; null in a serial run.
+    const StateOverRanks* stateOverRanks = nullptr;
 };
 
 }  // namespace sph

@@ -1,11 +1,16 @@
 #include "timeIntegrators/SundialsIntegrator.hpp"
 
+#include "timeIntegrators/StateOverRanks.hpp"
+
 namespace sph {
 
 template <int D>
 double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     system_ = &system;
-    if (restart_ || !memory_) {
+    // On several ranks every rank restarts together: the vector is made over all of them.
+    bool restart = restart_ || !memory_;
+    if (system.stateOverRanks) restart = system.stateOverRanks->onAnyRank(restart);
+    if (restart) {
         N_Vector y = state_.wrap(system);
         if (memory_) {
             addCounts(beforeRestarts_);
@@ -19,6 +24,7 @@ double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, do
     const int flag = advance(t, dt, reached);
     if (flag < 0) failIntegration(solverName_, flagName(flag), reached, state_.lastFailure());
     lastStep_ = lastStep();
+    state_.loadWrapped(system);
     this->evaluate(system, reached);
     state_.markEvaluated(system, reached);
     return reached - t;

@@ -2,6 +2,7 @@
 
 #include "core/FatalError.hpp"
 #include "timeIntegrators/EvolvedState.hpp"
+#include "timeIntegrators/StateOverRanks.hpp"
 
 #include <fmt/format.h>
 #include <nvector/nvector_serial.h>
@@ -68,22 +69,63 @@ SundialsState<D>::~SundialsState() {
 }
 
 template <int D>
-std::vector<std::pair<double*, std::size_t>> SundialsState<D>::blocks(IntegrableSystem<D>& system) const {
+std::size_t SundialsState<D>::Block::length() const {
+    const std::size_t particles = owned ? static_cast<std::size_t>(std::count(owned->begin(), owned->end(), 1)) : held;
+    return particles * width;
+}
+
+template <int D>
+std::vector<typename SundialsState<D>::Block> SundialsState<D>::blocks(IntegrableSystem<D>& system, Values values) const {
     static_assert(sizeof(Vec<D>) == D * sizeof(double), "particle vectors must be packed doubles to be wrapped");
+    const StateOverRanks* ranks = system.stateOverRanks;
+    const std::vector<char>* fluidOwned = ranks ? ranks->fluidOwned : nullptr;
     const std::size_t n = system.fluid.ownedCount();
-    std::vector<std::pair<double*, std::size_t>> result{{system.fluid.position.data()->data(), n * D},
-                                                        {system.fluid[fields::velocity].data()->data(), n * D}};
-    for (ParticleSet<D>* set : evolvedDensitySets(system)) result.emplace_back((*set)[fields::density].data(), set->ownedCount());
+    const bool rates = values == Values::Rates;
+    std::vector<Block> result{{system.fluid.position.data()->data(), D, n, fluidOwned},
+                              {system.fluid[rates ? fields::acceleration : fields::velocity].data()->data(), D, n, fluidOwned}};
+    for (ParticleSet<D>* set : evolvedDensitySets(system))
+        result.push_back({(*set)[rates ? fields::densityRate : fields::density].data(), 1, set->ownedCount(),
+                          ranks ? (set == &system.fluid ? ranks->fluidOwned : ranks->wallsOwned) : nullptr});
     return result;
 }
+
+namespace {
+
+// A block's values of the particles the vector holds, in their order, to `to`; and back.
+template <class Block>
+void gather(const Block& block, double* to) {
+    for (std::size_t i = 0; i < block.held; ++i)
+        if (!block.owned || (*block.owned)[i]) to = std::copy_n(block.data + i * block.width, block.width, to);
+}
+
+template <class Block>
+void scatter(const double* from, const Block& block) {
+    for (std::size_t i = 0; i < block.held; ++i)
+        if (!block.owned || (*block.owned)[i]) {
+            std::copy_n(from, block.width, block.data + i * block.width);
+            from += block.width;
+        }
+}
+
+}  // namespace
 
 template <int D>
 N_Vector SundialsState<D>::wrap(IntegrableSystem<D>& system) {
     if (wrapped_) N_VDestroy(wrapped_);
     for (N_Vector part : parts_) N_VDestroy(part);
     parts_.clear();
-    for (const auto& [data, size] : blocks(system)) parts_.push_back(N_VMake_Serial(static_cast<sunindextype>(size), data, context_));
-    wrapped_ = N_VNew_ManyVector(static_cast<sunindextype>(parts_.size()), parts_.data(), context_);
+    const StateOverRanks* ranks = system.stateOverRanks;
+    for (const Block& block : blocks(system)) {
+        const auto length = static_cast<sunindextype>(block.length());
+        if (!block.owned) {
+            parts_.push_back(N_VMake_Serial(length, block.data, context_));
+            continue;
+        }
+        parts_.push_back(N_VNew_Serial(length, context_));
+        gather(block, N_VGetArrayPointer(parts_.back()));
+    }
+    subvectorData_ = ranks ? ranks->subvectorData : N_VGetSubvectorArrayPointer_ManyVector;
+    wrapped_ = ranks ? ranks->join(parts_, context_) : N_VNew_ManyVector(static_cast<sunindextype>(parts_.size()), parts_.data(), context_);
     evaluatedValid_ = false;
     return wrapped_;
 }
@@ -93,9 +135,9 @@ N_Vector SundialsState<D>::absoluteTolerances(const IntegrableSystem<D>& system,
     if (absoluteTolerances_) N_VDestroy(absoluteTolerances_);
     absoluteTolerances_ = N_VClone(wrapped_);
     const StateScales scales = system.scales();
-    for (sunindextype k = 0; k < N_VGetNumSubvectors_ManyVector(absoluteTolerances_); ++k) {
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
         const double scale = k == 0 ? scales.smoothingLength : k == 1 ? scales.speedOfSound : scales.referenceDensity;
-        N_VConst(absolute * scale, N_VGetSubvector_ManyVector(absoluteTolerances_, k));
+        std::fill_n(part(absoluteTolerances_, k), N_VGetLength(parts_[k]), absolute * scale);
     }
     return absoluteTolerances_;
 }
@@ -103,7 +145,11 @@ N_Vector SundialsState<D>::absoluteTolerances(const IntegrableSystem<D>& system,
 template <int D>
 void SundialsState<D>::markEvaluated(IntegrableSystem<D>& system, double t) {
     evaluatedState_.clear();
-    for (const auto& [data, size] : blocks(system)) evaluatedState_.insert(evaluatedState_.end(), data, data + size);
+    for (const Block& block : blocks(system)) {
+        const std::size_t offset = evaluatedState_.size();
+        evaluatedState_.resize(offset + block.length());
+        gather(block, evaluatedState_.data() + offset);
+    }
     evaluatedTime_ = t;
     evaluatedValid_ = true;
 }
@@ -116,10 +162,9 @@ bool SundialsState<D>::isEvaluatedState(IntegrableSystem<D>& system, N_Vector y)
     std::size_t offset = 0;
     const auto parts = blocks(system);
     for (std::size_t k = 0; k < parts.size(); ++k) {
-        const std::size_t size = parts[k].second;
+        const std::size_t size = parts[k].length();
         if (offset + size > evaluatedState_.size()) return false;
-        const double* data = N_VGetSubvectorArrayPointer_ManyVector(y, static_cast<sunindextype>(k));
-        if (std::memcmp(data, evaluatedState_.data() + offset, size * sizeof(double)) != 0) return false;
+        if (size > 0 && std::memcmp(part(y, k), evaluatedState_.data() + offset, size * sizeof(double)) != 0) return false;
         offset += size;
     }
     return offset == evaluatedState_.size();
@@ -129,79 +174,101 @@ template <int D>
 void SundialsState<D>::load(IntegrableSystem<D>& system, N_Vector y) {
     const auto parts = blocks(system);
     for (std::size_t k = 0; k < parts.size(); ++k) {
-        const double* data = N_VGetSubvectorArrayPointer_ManyVector(y, static_cast<sunindextype>(k));
-        if (data != parts[k].first) std::memcpy(parts[k].first, data, parts[k].second * sizeof(double));
+        const double* data = part(y, k);
+        if (parts[k].owned)
+            scatter(data, parts[k]);
+        else if (data != parts[k].data)
+            std::memcpy(parts[k].data, data, parts[k].length() * sizeof(double));
     }
+    if (system.stateOverRanks) system.stateOverRanks->refreshCopies();
     evaluatedValid_ = false;
+}
+
+template <int D>
+std::string SundialsState<D>::storeRates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, bool viscousOnly) {
+    const auto state = blocks(system);
+    const auto rateBlocks = blocks(system, Values::Rates);
+    const std::size_t positions = state[0].length();
+    if (viscousOnly)
+        std::fill_n(part(ydot, 0), positions, 0.0);
+    else
+        std::copy_n(part(y, 1), positions, part(ydot, 0));
+    for (std::size_t k = 1; k < rateBlocks.size(); ++k) {
+        double* rate = part(ydot, k);
+        gather(rateBlocks[k], rate);
+        const auto bad = std::find_if(rate, rate + rateBlocks[k].length(), [](double value) { return !std::isfinite(value); });
+        if (bad != rate + rateBlocks[k].length()) {
+            // The particle: the (bad - rate) / width-th of those the vector holds.
+            const ParticleSet<D>& set = k < 2 ? system.fluid : *evolvedDensitySets(system)[k - 2];
+            std::size_t wanted = static_cast<std::size_t>(bad - rate) / rateBlocks[k].width, i = 0;
+            for (;; ++i)
+                if (!rateBlocks[k].owned || (*rateBlocks[k].owned)[i])
+                    if (wanted-- == 0) break;
+            if (k == 1)
+                return fmt::format("fluid particle id {} at ({:g}) has a non-finite acceleration at time {:.9g}", set.globalId[i],
+                                   fmt::join(set.position[i], " "), t);
+            return fmt::format("{} particle id {} has a non-finite density rate at time {:.9g}", set.name(), set.globalId[i], t);
+        }
+        if (viscousOnly && k > 1) std::fill_n(rate, rateBlocks[k].length(), 0.0);
+    }
+    return {};
 }
 
 template <int D>
 int SundialsState<D>::rates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, RateTerms terms,
                             const std::function<void(double, RateTerms)>& evaluate) {
+    const StateOverRanks* ranks = system.stateOverRanks;
+    bool cached = terms == RateTerms::All && evaluatedValid_ && t == evaluatedTime_ && isEvaluatedState(system, y);
+    if (ranks) cached = !ranks->onAnyRank(!cached);
+    std::string failure;
     try {
-        const bool cached = terms == RateTerms::All && evaluatedValid_ && t == evaluatedTime_ && isEvaluatedState(system, y);
         if (!cached) {
-            auto timer = system.timers.time(Stage::Integrator);
-            load(system, y);
-        }
-        if (!cached) evaluate(t, terms);
-        if (terms == RateTerms::All && !cached) markEvaluated(system, t);
-        auto timer = system.timers.time(Stage::Integrator);
-        const std::size_t n = system.fluid.ownedCount();
-        const bool viscousOnly = terms == RateTerms::ViscousOnly;
-        double* positionRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, 0);
-        if (viscousOnly)
-            std::fill(positionRate, positionRate + n * D, 0.0);
-        else
-            std::memcpy(positionRate, N_VGetSubvectorArrayPointer_ManyVector(y, 1), n * D * sizeof(double));
-        const auto& a = system.fluid[fields::acceleration];
-        double* velocityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, 1);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!a[i].allFinite())
-                throw std::runtime_error(fmt::format("fluid particle id {} at ({:g}) has a non-finite acceleration at time {:.9g}",
-                                                     system.fluid.globalId[i], fmt::join(system.fluid.position[i], " "), t));
-            for (int d = 0; d < D; ++d) velocityRate[i * D + d] = a[i][d];
-        }
-        sunindextype k = 2;
-        for (ParticleSet<D>* set : evolvedDensitySets(system)) {
-            const auto& rate = (*set)[fields::densityRate];
-            double* densityRate = N_VGetSubvectorArrayPointer_ManyVector(ydot, k++);
-            for (std::size_t i = 0; i < set->ownedCount(); ++i) {
-                if (!std::isfinite(rate[i]))
-                    throw std::runtime_error(
-                        fmt::format("{} particle id {} has a non-finite density rate at time {:.9g}", set->name(), set->globalId[i], t));
-                densityRate[i] = viscousOnly ? 0.0 : rate[i];
+            {
+                auto timer = system.timers.time(Stage::Integrator);
+                load(system, y);
             }
+            evaluate(t, terms);
+            if (terms == RateTerms::All) markEvaluated(system, t);
         }
-        return 0;
+        auto timer = system.timers.time(Stage::Integrator);
+        failure = storeRates(system, t, y, ydot, terms == RateTerms::ViscousOnly);
     } catch (const std::exception& error) {
-        lastFailure_ = error.what();
-        evaluatedValid_ = false;
-        return 1;
+        if (ranks) ranks->stopAll(error.what());
+        failure = error.what();
     }
+    if (ranks && ranks->onAnyRank(!failure.empty()) && failure.empty()) failure = "an evaluation failed on another rank";
+    if (failure.empty()) return 0;
+    lastFailure_ = failure;
+    evaluatedValid_ = false;
+    return 1;
 }
 
 template <int D>
 int SundialsState<D>::viscousJacobianTimes(IntegrableSystem<D>& system, double t, N_Vector w, N_Vector Jw, N_Vector y, N_Vector fy,
                                            const std::function<void(double, RateTerms)>& evaluate) {
+    const StateOverRanks* ranks = system.stateOverRanks;
     try {
         load(system, y);
-        const std::size_t n = system.fluid.ownedCount();
         auto& v = system.fluid[fields::velocity];
         const std::vector<Vec<D>> velocity = v;  // y may be the wrapped arrays themselves
-        const double* wv = N_VGetSubvectorArrayPointer_ManyVector(w, 1);
-        for (std::size_t i = 0; i < n; ++i)
-            for (int d = 0; d < D; ++d) v[i][d] += wv[i * D + d];
+        // v + w: w in the velocity block's place of the vector, added to the particles it holds.
+        Block perturbed = blocks(system)[1];
+        std::vector<double> sum(perturbed.length());
+        gather(perturbed, sum.data());
+        const double* wv = part(w, 1);
+        for (std::size_t j = 0; j < sum.size(); ++j) sum[j] += wv[j];
+        scatter(sum.data(), perturbed);
+        if (ranks) ranks->refreshCopies();
         evaluate(t, RateTerms::ViscousOnly);
-        v = velocity;
+        v = velocity;  // the copies' too
         N_VConst(0.0, Jw);
-        const auto& a = system.fluid[fields::acceleration];
-        const double* av = N_VGetSubvectorArrayPointer_ManyVector(fy, 1);
-        double* Jv = N_VGetSubvectorArrayPointer_ManyVector(Jw, 1);
-        for (std::size_t i = 0; i < n; ++i)
-            for (int d = 0; d < D; ++d) Jv[i * D + d] = a[i][d] - av[i * D + d];
+        double* Jv = part(Jw, 1);
+        gather(blocks(system, Values::Rates)[1], Jv);
+        const double* av = part(fy, 1);
+        for (std::size_t j = 0; j < sum.size(); ++j) Jv[j] -= av[j];
         return 0;
     } catch (const std::exception& error) {
+        if (ranks) ranks->stopAll(error.what());
         lastFailure_ = error.what();
         return 1;
     }

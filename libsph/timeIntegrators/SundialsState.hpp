@@ -8,6 +8,13 @@
 // non-finite rate and returns a recoverable error, so an adaptive integrator retries smaller;
 // the message is kept for the report if the step fails for good.
 //
+// On several ranks (IntegrableSystem::stateOverRanks) each rank's subvectors hold copies of the
+// values of the particles it owns, and the vector is an MPI ManyVector: SUNDIALS' norms and dot
+// products sum over every rank, so every rank takes the same steps. Loading a vector writes the
+// owned particles and refreshes their copies on the other ranks; every decision that leads to
+// an exchange (evaluate or answer from the arrays, a failed evaluation) is taken together. An
+// exception inside an evaluation stops every rank (StateOverRanks::stopAll).
+//
 // Evaluating at the end of a step keeps the driver's rates current; an explicit method's first
 // stage of the next step asks for the same (t, y), which is then answered from the arrays.
 #pragma once
@@ -19,6 +26,7 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <utility>
@@ -67,8 +75,13 @@ public:
     SUNContext context() const { return context_; }
 
     // (Re)wraps the particle arrays; call after the system's arrays moved (reordering).
+    // Collective on several ranks.
     N_Vector wrap(IntegrableSystem<D>& system);
     N_Vector wrapped() const { return wrapped_; }
+
+    // The wrapped vector into the particle arrays, after a step (a serial run's arrays are the
+    // vector already). Collective on several ranks.
+    void loadWrapped(IntegrableSystem<D>& system) { load(system, wrapped_); }
 
     // Per-component absolute tolerances, scaled as in SundialsTolerances.
     N_Vector absoluteTolerances(const IntegrableSystem<D>& system, double absolute);
@@ -92,11 +105,26 @@ public:
     const std::string& lastFailure() const { return lastFailure_; }
 
 private:
+    // One array of the state: `width` values per particle, `held` particles, of which the
+    // vector holds those `owned` marks (all where it is null).
+    struct Block {
+        double* data;
+        std::size_t width, held;
+        const std::vector<char>* owned;
+        std::size_t length() const;  // values in the vector
+    };
+    // The state's arrays: fluid position and velocity, the evolved densities; `values` names
+    // the array in their place (acceleration and density rates for the right-hand side).
+    enum class Values { State, Rates };
+    std::vector<Block> blocks(IntegrableSystem<D>& system, Values values = Values::State) const;
+    double* part(N_Vector v, std::size_t k) const { return subvectorData_(v, static_cast<sunindextype>(k)); }
     void load(IntegrableSystem<D>& system, N_Vector y);
     bool isEvaluatedState(IntegrableSystem<D>& system, N_Vector y) const;
-    std::vector<std::pair<double*, std::size_t>> blocks(IntegrableSystem<D>& system) const;
+    // The evaluated rates into ydot; the first non-finite one's description, or empty.
+    std::string storeRates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, bool viscousOnly);
 
     SUNContext context_ = nullptr;
+    double* (*subvectorData_)(N_Vector, sunindextype) = N_VGetSubvectorArrayPointer_ManyVector;
     std::vector<N_Vector> parts_;
     N_Vector wrapped_ = nullptr;
     N_Vector absoluteTolerances_ = nullptr;
