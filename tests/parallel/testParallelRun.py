@@ -5,7 +5,7 @@ bit (and the .csv files, where the case writes them), and the same step count, o
 builds; new boxes every 100 steps in some). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
 particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
 channel with summation density, the deficiency correction (calibrated in a tank; the boundary
-integral in the dam break), mDBC and the repulsive walls, moving and deforming walls, a free body (a sliding lid, an oscillating tank, a
+integral in the dam break), mDBC (also with the ranks' cut just in front of a wall) and the repulsive walls, moving and deforming walls, a free body (a sliding lid, an oscillating tank, a
 steep bulge), delta-SPH and particle shifting, and the 3D dam break. Also: the output opens as one series in
 ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
 stops all with its step and particle, and the SUNDIALS integrators on the MPI ManyVector. The
@@ -49,9 +49,10 @@ class ParallelRun(unittest.TestCase):
         self.work = tempfile.TemporaryDirectory()
         self.addCleanup(self.work.cleanup)
 
-    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False, schemes=None, tag=None):
+    def case(self, name, end_time, write_interval, boundary=None, density=None, integrator=None, functions=False, schemes=None, tag=None,
+             walls=()):
         """The case generated, the run controls set, its function objects removed unless `functions`;
-        `tag` names a variant's directory."""
+        `tag` names a variant's directory; `walls`: (patch, generator entry, model) added."""
         case = os.path.join(self.work.name, name + (f".{integrator}" if integrator else "") + (f".{tag}" if tag else ""))
         shutil.copytree(os.path.join(ROOT, "cases", name), case,
                         ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "log.*", "*.png", "*.pvd"))
@@ -67,6 +68,10 @@ class ParallelRun(unittest.TestCase):
                 text = re.sub(rf"^{line.split()[0]}\s.*$", "", text, flags=re.M) + line + "\n"
             with open(os.path.join(case, "system", "sphSchemes"), "w") as f:
                 f.write(text)
+        for patch, generator, model in walls:
+            edit(os.path.join(case, "system", "generateParticlesDict"), r"^boundaries\s*\{", f"boundaries\n{{\n    {patch} {{ {generator} }}")
+            with open(os.path.join(case, "constant", "boundaryProperties"), "a") as f:
+                f.write(f"{patch} {{ type {model}; }}\n")
         if integrator:
             edit(os.path.join(case, "system", "timeIntegration"), r"integrator\s+\{[^}]*\}", f"integrator {{ type {integrator}; }}")
         control = os.path.join(case, "system", "controlDict")
@@ -178,6 +183,29 @@ class ParallelRun(unittest.TestCase):
         # depth in front of it (the halo reaches that far). Repulsive walls, one layer: the fluid
         # near a box's face is pushed by the other rank's wall particles too.
         self.assert_equal_to_serial(self.case("hydrostaticTankMDBC2D", 0.05, 0.025), (2, 3), ("0.025", "0.05"))
+        self.assert_equal_to_serial(self.mdbc_wall_beside_a_cut(), (2, 3), ("0.025", "0.05"))
+
+    def mdbc_wall_beside_a_cut(self):
+        """Two mDBC blocks of one size in the still-water tank, one each side of the middle: the
+        two ranks' cut (the weighted median, at a cell boundary) runs 1.5 dx in front of the left
+        block's face. Its deepest wall particles' ghost nodes lie across the cut, and the fluid
+        they read reaches 0.11 m past it: with a halo of one kernel support and the skin
+        (0.086 m) the walls' densities differ from the serial run's."""
+        blocks = [("leftBlock", "type box; min (0.5 0.2); max (0.98 0.6); layers 4;", "modifiedDynamicBoundary"),
+                  ("rightBlock", "type box; min (1.24 0.2); max (1.72 0.6); layers 4;", "modifiedDynamicBoundary")]
+        case = self.case("hydrostaticTankMDBC2D", 0.05, 0.025, tag="blocks", walls=blocks)
+        probe = case + ".cut"
+        shutil.copytree(case, probe)
+        self.run_case(probe, 2, options=("-rates",))
+        pieces = os.path.join(probe, "postProcessing", "rates", "0")
+        face, dx = 0.98, 0.02
+        fluid = arrays(os.path.join(pieces, "fluid_1.vtu"))["points"]
+        beside = fluid[(fluid[:, 1] > 0.2) & (fluid[:, 1] < 0.6), 0]
+        self.assertLess(beside.min() - face, 3 * dx, "rank 1 owns fluid within 3 dx of the left block's face")
+        walls = arrays(os.path.join(pieces, "walls_1.vtu"))["points"]
+        self.assertFalse(np.any((walls[:, 0] < face) & (walls[:, 0] > 0.5) & (walls[:, 1] > 0.2) & (walls[:, 1] < 0.6)),
+                         "rank 0 owns the left block's face")
+        return case
         for tag, law in (("mk", "monaghanKajtar; K 1"), ("lj", "lennardJones; Dc 3; r0 7e-4")):
             with self.subTest(law=law):
                 self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, law, tag=tag), (3,), ("0.01", "0.02"))
