@@ -221,8 +221,8 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         if (sortByCell || agreed.displacement > 0.25 * shared.skin()) {
             const auto begin = std::chrono::steady_clock::now();
             const auto repartition = sortByCell ? balance.check(ranks, step, workSeconds(system.timers), shared.ownedWeight()) : std::nullopt;
-            // The SUNDIALS integrators restart where the particles a rank owns changed (and
-            // where the serial run restarts, at the sort): their vector holds those.
+            // The SUNDIALS integrators restart where the serial run restarts (at the sort) and
+            // take the new particles where those a rank owns changed: their vector holds them.
             bool ownedChanged = true;
             if (repartition) {
                 shared.repartition(repartition->weightPerParticle);
@@ -230,7 +230,10 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
             } else {
                 ownedChanged = shared.redistribute(sortByCell);
             }
-            if (sortByCell || ownedChanged) integrator.stateChangedOutside();
+            if (sortByCell)
+                integrator.stateChangedOutside();
+            else if (ownedChanged)
+                integrator.particlesMigrated();
             buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         }
         const double target = std::min(nextWrite, controls.endTime);

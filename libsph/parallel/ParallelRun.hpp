@@ -11,12 +11,13 @@
 // postProcessing/rates/<time>/. A run restarts from pieces or a serial state, on any number of
 // ranks (io/ParticleState).
 // Every integrator: the native ones, and the SUNDIALS ones on an MPI ManyVector of the owned
-// particles (StateOverRanks; they restart where the particles a rank owns change, and where the
-// serial run restarts); every boundary model, walls fixed, with a prescribed motion or free
-// bodies (halos as wide as BoundaryModel::reach; a free body's loads summed in the serial order);
-// continuity or summation density; periodic directions; any kernel, viscosity and density
-// diffusion; particle shifting. Every rank reads the whole start state (issue 23). The boxes are
-// made again when the ranks' measured work drifts apart (CostBalance).
+// particles (StateOverRanks; they restart where the serial run restarts, and take a rank's new
+// particles after a migration: arkodeERK by ARKODE's resize, the others by a restart); every
+// boundary model, walls fixed, with a prescribed motion or free bodies (halos as wide as
+// BoundaryModel::reach; a free body's loads summed in the serial order); continuity or summation
+// density; periodic directions; any kernel, viscosity and density diffusion; particle shifting.
+// Every rank reads the whole start state (issue 23). The boxes are made again when the ranks'
+// measured work drifts apart (CostBalance).
 #pragma once
 
 #include "driver/Simulation.hpp"

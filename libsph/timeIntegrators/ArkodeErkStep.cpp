@@ -53,6 +53,15 @@ void ArkodeErkStep<D>::create(IntegrableSystem<D>& system, double t, N_Vector y,
 }
 
 template <int D>
+bool ArkodeErkStep<D>::resize(IntegrableSystem<D>& system, double t, N_Vector y) {
+    if (ERKStepResize(this->memory_, y, 1.0, t, nullptr, nullptr) != ARK_SUCCESS) return false;
+    // The tolerances' vector is the old length: set again.
+    if (adaptivity_.adaptive)
+        ERKStepSVtolerances(this->memory_, adaptivity_.tolerances.relative, this->state_.absoluteTolerances(system, adaptivity_.tolerances.absolute));
+    return true;
+}
+
+template <int D>
 void ArkodeErkStep<D>::release() {
     ERKStepFree(&this->memory_);
 }

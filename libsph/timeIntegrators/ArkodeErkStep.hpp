@@ -26,6 +26,7 @@ public:
 protected:
     using typename SundialsIntegrator<D>::Counts;
     void create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) override;
+    bool resize(IntegrableSystem<D>& system, double t, N_Vector y) override;
     void release() override;
     int advance(double t, double dt, double& reached) override;
     std::string flagName(int flag) const override;

@@ -7,18 +7,23 @@ namespace sph {
 template <int D>
 double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, double dt) {
     system_ = &system;
-    // On several ranks every rank restarts together: the vector is made over all of them.
-    bool restart = restart_ || !memory_;
-    if (system.stateOverRanks) restart = system.stateOverRanks->onAnyRank(restart);
-    if (restart) {
+    // On several ranks every rank restarts or resizes together: the vector is made over all of them.
+    bool restart = restart_ || !memory_, migrated = migrated_;
+    if (system.stateOverRanks) {
+        restart = system.stateOverRanks->onAnyRank(restart);
+        migrated = system.stateOverRanks->onAnyRank(migrated);
+    }
+    if (restart || migrated) {
         N_Vector y = state_.wrap(system);
-        if (memory_) {
-            addCounts(beforeRestarts_);
-            release();
+        if (restart || !resize(system, t, y)) {
+            if (memory_) {
+                addCounts(beforeRestarts_);
+                release();
+            }
+            create(system, t, y, lastStep_);
         }
-        create(system, t, y, lastStep_);
         state_.markEvaluated(system, t);  // on entry the rates at t are current
-        restart_ = false;
+        restart_ = migrated_ = false;
     }
     double reached = t;
     const int flag = advance(t, dt, reached);

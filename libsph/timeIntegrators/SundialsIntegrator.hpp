@@ -15,6 +15,7 @@ template <int D>
 class SundialsIntegrator : public TimeIntegrator<D> {
 public:
     void stateChangedOutside() override { restart_ = true; }
+    void particlesMigrated() override { migrated_ = true; }
     // A restarted run starts from the step size reached; the error controller's history and
     // CVODE's BDF history are rebuilt, so it agrees with the uninterrupted run to the tolerances.
     std::vector<double> savedState() const override { return {lastStep_}; }
@@ -34,6 +35,9 @@ protected:
     // One SUNDIALS package: create its memory at (t, y) with `initialStep` (0: its own guess),
     // free it, take one step to at most t + dt, name a return flag, read its last step and counters.
     virtual void create(IntegrableSystem<D>& system, double t, N_Vector y, double initialStep) = 0;
+    // Hands the package a vector of other length at t, keeping its step size and error history;
+    // false where it cannot (then it is created again).
+    virtual bool resize(IntegrableSystem<D>& /*system*/, double /*t*/, N_Vector /*y*/) { return false; }
     virtual void release() = 0;
     virtual int advance(double t, double dt, double& reached) = 0;
     virtual std::string flagName(int flag) const = 0;
@@ -52,6 +56,7 @@ private:
     std::string solverName_;
     bool implicitSolve_;
     bool restart_ = true;
+    bool migrated_ = false;
     double lastStep_ = 0.0;
     Counts beforeRestarts_;
 };

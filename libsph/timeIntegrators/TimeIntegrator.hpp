@@ -35,6 +35,10 @@ public:
     // The driver changed the state between steps (periodic wrap, particles reordered by cell):
     // an integrator that keeps state of its own restarts from the system's.
     virtual void stateChangedOutside() {}
+    // A decomposed run moved particles between its ranks, the state itself unchanged: an
+    // integrator that holds this rank's particles takes the new set, keeping its history where
+    // it can.
+    virtual void particlesMigrated() { stateChangedOutside(); }
 
     // Restart: what the integrator carries from step to step besides particle fields, written
     // with each state, and handed back before the first step of a restarted run (an empty
