@@ -29,9 +29,7 @@ double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, do
     const int flag = advance(t, dt, reached);
     if (flag < 0) failIntegration(solverName_, flagName(flag), reached, state_.lastFailure());
     lastStep_ = lastStep();
-    state_.loadWrapped(system);
-    this->evaluate(system, reached);
-    state_.markEvaluated(system, reached);
+    state_.evaluateAtStepEnd(system, reached, [&](double time, RateTerms terms) { this->evaluate(system, time, terms); });
     return reached - t;
 }
 

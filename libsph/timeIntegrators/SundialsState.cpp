@@ -185,6 +185,16 @@ void SundialsState<D>::load(IntegrableSystem<D>& system, N_Vector y) {
 }
 
 template <int D>
+void SundialsState<D>::evaluateAtStepEnd(IntegrableSystem<D>& system, double t, const std::function<void(double, RateTerms)>& evaluate) {
+    bool current = evaluatedValid_ && t == evaluatedTime_ && isEvaluatedState(system, wrapped_);
+    if (system.stateOverRanks) current = !system.stateOverRanks->onAnyRank(!current);
+    if (current) return;
+    load(system, wrapped_);
+    evaluate(t, RateTerms::All);
+    markEvaluated(system, t);
+}
+
+template <int D>
 std::string SundialsState<D>::storeRates(IntegrableSystem<D>& system, double t, N_Vector y, N_Vector ydot, bool viscousOnly) {
     const auto state = blocks(system);
     const auto rateBlocks = blocks(system, Values::Rates);

@@ -16,7 +16,8 @@
 // exception inside an evaluation stops every rank (StateOverRanks::stopAll).
 //
 // Evaluating at the end of a step keeps the driver's rates current; an explicit method's first
-// stage of the next step asks for the same (t, y), which is then answered from the arrays.
+// stage of the next step asks for the same (t, y), which is then answered from the arrays. A
+// table whose last stage is the step's end (first same as last) evaluated it there already.
 #pragma once
 
 #include "io/Dictionary.hpp"
@@ -79,9 +80,11 @@ public:
     N_Vector wrap(IntegrableSystem<D>& system);
     N_Vector wrapped() const { return wrapped_; }
 
-    // The wrapped vector into the particle arrays, after a step (a serial run's arrays are the
-    // vector already). Collective on several ranks.
-    void loadWrapped(IntegrableSystem<D>& system) { load(system, wrapped_); }
+    // The system's rates at the end of a step, at time t and the wrapped vector's state: taken
+    // from its last evaluation where that was there (an explicit table whose last stage is the
+    // step's end, first same as last), else the vector loaded into the particle arrays (a serial
+    // run's arrays are the vector already) and evaluated. Collective on several ranks.
+    void evaluateAtStepEnd(IntegrableSystem<D>& system, double t, const std::function<void(double, RateTerms)>& evaluate);
 
     // Per-component absolute tolerances, scaled as in SundialsTolerances.
     N_Vector absoluteTolerances(const IntegrableSystem<D>& system, double absolute);

@@ -138,6 +138,23 @@ private:
     Viscosity none_ = NoViscosity{};
 };
 
+// An explicit SUNDIALS table evaluates its stages but the first (the previous step's end), and
+// the step's end only where no stage was there: a table whose last stage is the step's end
+// (first same as last) hands over that stage's rates.
+TEST(IntegratorCounters, ExplicitSundialsTablesEvaluateTheStepsEndOnlyWhereNoStageWasThere) {
+    for (const auto& [entries, perStep] :
+         std::vector<std::pair<std::string, long>>{{"type arkodeERK; table ARKODE_BOGACKI_SHAMPINE_4_2_3;", 3},  // 4 stages, the last at the end
+                                                   {"type arkodeERK; table ARKODE_ZONNEVELD_5_3_4;", 5},         // 5, the last at 3/4 of the step
+                                                   {"type arkodeERK; table ARKODE_HEUN_EULER_2_1_2;", 2}}) {     // 2, the last at y + h k1
+        Oscillator system;
+        auto integrator = makeIntegrator(entries);
+        system.evaluateRates(0.0, RateTerms::All);
+        double t = 0.0;
+        for (int k = 0; k < 7; ++k) t += integrator->step(system, t, 0.01);
+        EXPECT_EQ(integrator->counters()[1], (std::pair<std::string, long>{"right-hand-side evaluations", 7 * perStep})) << entries;
+    }
+}
+
 // The distance from the exact (cos t, sin t) at t = 1 after `steps` equal steps.
 double oscillatorError(const std::string& entries, int steps) {
     Oscillator system;
