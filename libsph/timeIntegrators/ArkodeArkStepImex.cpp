@@ -108,9 +108,9 @@ std::string ArkodeArkStepImex<D>::flagName(int flag) const {
 }
 
 template <int D>
-double ArkodeArkStepImex<D>::lastStep() const {
+double ArkodeArkStepImex<D>::nextStep() const {
     double step = 0.0;
-    ARKStepGetLastStep(this->memory_, &step);
+    ARKStepGetCurrentStep(this->memory_, &step);
     return step;
 }
 

@@ -79,9 +79,9 @@ std::string ArkodeErkStep<D>::flagName(int flag) const {
 }
 
 template <int D>
-double ArkodeErkStep<D>::lastStep() const {
+double ArkodeErkStep<D>::nextStep() const {
     double step = 0.0;
-    ERKStepGetLastStep(this->memory_, &step);
+    ERKStepGetCurrentStep(this->memory_, &step);
     return step;
 }
 

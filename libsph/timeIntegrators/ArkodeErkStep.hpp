@@ -30,7 +30,7 @@ protected:
     void release() override;
     int advance(double t, double dt, double& reached) override;
     std::string flagName(int flag) const override;
-    double lastStep() const override;
+    double nextStep() const override;
     void addCounts(Counts& counts) const override;
 
 private:

@@ -62,9 +62,9 @@ std::string CvodeBdf<D>::flagName(int flag) const {
 }
 
 template <int D>
-double CvodeBdf<D>::lastStep() const {
+double CvodeBdf<D>::nextStep() const {
     double step = 0.0;
-    CVodeGetLastStep(this->memory_, &step);
+    CVodeGetCurrentStep(this->memory_, &step);
     return step;
 }
 

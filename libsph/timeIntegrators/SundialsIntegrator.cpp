@@ -20,7 +20,7 @@ double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, do
                 addCounts(beforeRestarts_);
                 release();
             }
-            create(system, t, y, lastStep_);
+            create(system, t, y, nextStep_);
         }
         state_.markEvaluated(system, t);  // on entry the rates at t are current
         restart_ = migrated_ = false;
@@ -28,7 +28,7 @@ double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, do
     double reached = t;
     const int flag = advance(t, dt, reached);
     if (flag < 0) failIntegration(solverName_, flagName(flag), reached, state_.lastFailure());
-    lastStep_ = lastStep();
+    nextStep_ = nextStep();
     state_.evaluateAtStepEnd(system, reached, [&](double time, RateTerms terms) { this->evaluate(system, time, terms); });
     return reached - t;
 }

@@ -155,6 +155,26 @@ TEST(IntegratorCounters, ExplicitSundialsTablesEvaluateTheStepsEndOnlyWhereNoSta
     }
 }
 
+// A restart after every step (what particle shifting asks for) starts from the step the
+// integrator would take next, not from the last one the driver's stop time cut short: the
+// adaptive steps keep their size.
+TEST(AdaptiveIntegrators, RestartedEveryStepTheyKeepTheirStepSize) {
+    const auto stepsToOne = [](bool restartEveryStep) {
+        Oscillator system;
+        auto integrator = makeIntegrator("type arkodeERK; adaptive yes; relativeTolerance 1e-6; absoluteTolerance 1e-8;");
+        system.evaluateRates(0.0, RateTerms::All);
+        double t = 0.0;
+        int steps = 0;
+        for (; t < 1.0 - 1e-12 && steps < 100000; ++steps) {
+            t += integrator->step(system, t, std::min(0.05, 1.0 - t));
+            if (restartEveryStep) integrator->stateChangedOutside();
+        }
+        return steps;
+    };
+    const int uninterrupted = stepsToOne(false);
+    EXPECT_LE(stepsToOne(true), 2 * uninterrupted) << "uninterrupted: " << uninterrupted;
+}
+
 // The distance from the exact (cos t, sin t) at t = 1 after `steps` equal steps.
 double oscillatorError(const std::string& entries, int steps) {
     Oscillator system;
