@@ -62,8 +62,8 @@ void requireValidValues(const ParticleSet<D>& set, const std::filesystem::path& 
 }
 
 // Two particles with one id (a restart would mix up their histories) or two fluid particles at
-// one position (their pair has no direction); wall normals of unit length (a zero normal leaves
-// the wall without a side). Wall particles may coincide: patches that meet share a corner.
+// one position (their pair has no direction). Wall particles may coincide: patches that meet
+// share a corner.
 template <int D>
 void requireDistinctParticles(const ParticleSet<D>& set, const std::filesystem::path& file, bool checkPositions) {
     const auto reject = [&](const std::string& what) {
@@ -83,26 +83,35 @@ void requireDistinctParticles(const ParticleSet<D>& set, const std::filesystem::
         if (set.position[order[k]] == set.position[order[k - 1]])
             reject(fmt::format("particle ids {} and {} are at the same position ({:g})", set.globalId[order[k - 1]], set.globalId[order[k]],
                                fmt::join(set.position[order[k]].data(), set.position[order[k]].data() + D, " ")));
+}
+
+// Wall normals of unit length (a zero normal leaves the wall without a side).
+template <int D>
+void requireUnitNormals(const ParticleSet<D>& set, const std::filesystem::path& file) {
     if (!set.has(fields::normal)) return;
     const auto& normal = set[fields::normal];
     for (std::size_t i = 0; i < set.size(); ++i)
         if (std::abs(normal[i].norm() - 1.0) > 1e-3)
-            reject(fmt::format("wall particle id {} has the normal ({:g}) of length {:g} (valid: a unit vector)", set.globalId[i],
-                               fmt::join(normal[i].data(), normal[i].data() + D, " "), normal[i].norm()));
+            throw FatalError(
+                fmt::format("error: particle file '{}': wall particle id {} has the normal ({:g}) of length {:g} (valid: a "
+                            "unit vector) (a corrupt or hand-edited state file?)",
+                            file.string(), set.globalId[i], fmt::join(normal[i].data(), normal[i].data() + D, " "), normal[i].norm()));
 }
 
 // Each patch's layers of wall particles (the wall field `layer`) against what its model needs.
 template <int D>
 void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDict, const std::vector<std::string>& patchNames,
-                       const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support, double dx) {
+                       const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support, double dx, const StateShare<D>* share) {
     if (!walls.has(fields::layer)) return;
-    std::vector<int> layers(patchNames.size(), 0);
+    std::vector<double> layerCounts(patchNames.size(), 0.0);
     const auto& patch = walls[fields::patch];
     const auto& layer = walls[fields::layer];
     for (std::size_t w = 0; w < walls.size(); ++w) {
-        int& most = layers[static_cast<std::size_t>(patch[w])];
-        most = std::max(most, layer[w] + 1);
+        double& most = layerCounts[static_cast<std::size_t>(patch[w])];
+        most = std::max(most, layer[w] + 1.0);
     }
+    if (share) share->largestOverRanks(layerCounts);
+    const std::vector<int> layers(layerCounts.begin(), layerCounts.end());
     for (std::size_t p = 0; p < patchNames.size(); ++p) {
         const Dictionary& patchDict = boundaryDict.subDict(patchNames[p]);
         const std::string type = patchDict.get<std::string>("type");
@@ -123,6 +132,13 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
     }
 }
 
+// Checks of the particles this run holds; with a share, a failure on one rank stops every rank
+// (what comes next involves them all).
+template <int D>
+void checkOnEveryRank(const StateShare<D>* share, const std::function<void()>& checks) {
+    share ? share->checkOnEveryRank(checks) : checks();
+}
+
 // The particle state of the start time, checked: fields, values, distinct particles, inside the domain.
 template <int D>
 struct StartState {
@@ -133,33 +149,41 @@ struct StartState {
 };
 
 template <int D>
-StartState<D> readStartState(const TimeDirectory& start, StateHeader& header) {
+StartState<D> readStartState(const TimeDirectory& start, StateHeader& header, const StateShare<D>* share) {
     StartState<D> state;
     const auto fluidFile = stateFile(start.path, "fluid");
     const auto wallFile = stateFile(start.path, "walls");
-    state.fluid = readParticleState<D>(fluidFile, "fluid", header);
-    state.walls = readParticleState<D>(wallFile, "walls", state.wallHeader);
-    requireFields(state.fluid, fluidFile, {fields::density, fields::mass}, {fields::velocity}, {});
-    requireFields(state.walls, wallFile, {fields::mass, fields::spacing}, {fields::normal}, {fields::patch});
-    requireValidValues(state.fluid, fluidFile);
-    requireValidValues(state.walls, wallFile);
-    requireDistinctParticles(state.fluid, fluidFile, true);
-    requireDistinctParticles(state.walls, wallFile, false);
-    if (state.fluid.size() == 0)
-        throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
-    if (!(header.spacing > 0.0))
-        throw FatalError(fmt::format("error: '{}': particle spacing must be positive, found {:g}", fluidFile.string(), header.spacing));
+    state.fluid = share ? share->read(fluidFile, "fluid", header) : readParticleState<D>(fluidFile, "fluid", header);
+    state.walls = share ? share->read(wallFile, "walls", state.wallHeader) : readParticleState<D>(wallFile, "walls", state.wallHeader);
     for (int d = 0; d < D; ++d) {
         state.domainMin[d] = header.domainMin[static_cast<std::size_t>(d)];
         state.domainMax[d] = header.domainMax[static_cast<std::size_t>(d)];
     }
+    checkOnEveryRank(share, [&] {
+        requireFields(state.fluid, fluidFile, {fields::density, fields::mass}, {fields::velocity}, {});
+        requireFields(state.walls, wallFile, {fields::mass, fields::spacing}, {fields::normal}, {fields::patch});
+        requireValidValues(state.fluid, fluidFile);
+        requireValidValues(state.walls, wallFile);
+        requireUnitNormals(state.walls, wallFile);
+        const ParticleSet<D>& fluid = state.fluid;
+        for (std::size_t i = 0; i < fluid.size(); ++i)
+            if ((fluid.position[i].array() < state.domainMin.array()).any() || (fluid.position[i].array() > state.domainMax.array()).any())
+                throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({:g}) lies outside the domain [({:g}), ({:g})]",
+                                             fluidFile.string(), fluid.globalId[i], fmt::join(fluid.position[i], " "),
+                                             fmt::join(state.domainMin, " "), fmt::join(state.domainMax, " ")));
+    });
+    const auto requireDistinct = [&](const ParticleSet<D>& set, const std::filesystem::path& file, bool checkPositions) {
+        share ? share->requireDistinct(set, file, checkPositions) : requireDistinctParticles(set, file, checkPositions);
+    };
+    requireDistinct(state.fluid, fluidFile, true);
+    requireDistinct(state.walls, wallFile, false);
+    std::array<double, 1> fluidCount{static_cast<double>(state.fluid.size())};
+    if (share) share->largestOverRanks(fluidCount);
+    if (fluidCount[0] == 0.0)
+        throw FatalError("error: '" + fluidFile.string() + "' holds no fluid particles; check the fluid regions in system/generateParticlesDict");
+    if (!(header.spacing > 0.0))
+        throw FatalError(fmt::format("error: '{}': particle spacing must be positive, found {:g}", fluidFile.string(), header.spacing));
     for (std::size_t d = 0; d < header.periodic.size() && d < static_cast<std::size_t>(D); ++d) state.periodic[d] = header.periodic[d] != 0.0;
-    const ParticleSet<D>& fluid = state.fluid;
-    for (std::size_t i = 0; i < fluid.size(); ++i)
-        if ((fluid.position[i].array() < state.domainMin.array()).any() || (fluid.position[i].array() > state.domainMax.array()).any())
-            throw FatalError(fmt::format("error: '{}': fluid particle id {} at ({:g}) lies outside the domain [({:g}), ({:g})]", fluidFile.string(),
-                                         fluid.globalId[i], fmt::join(fluid.position[i], " "), fmt::join(state.domainMin, " "),
-                                         fmt::join(state.domainMax, " ")));
     return state;
 }
 
@@ -206,11 +230,14 @@ FluidModels<D> selectFluidModels(const Dictionary& schemes, Kernel<D> kernel, co
 // the wall-force patches.
 template <int D>
 std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, const Dictionary& boundaryDict, const std::filesystem::path& wallFile,
-                                    ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const ModelContext& context, double support) {
+                                    ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const ModelContext& context, double support,
+                                    const StateShare<D>* share) {
     const auto& patchOfWall = walls[fields::patch];
-    for (int p : patchOfWall)
-        if (p < 0 || static_cast<std::size_t>(p) >= patchNames.size())
-            throw FatalError(fmt::format("error: '{}': wall patch index {} has no name in patchNames", wallFile.string(), p));
+    checkOnEveryRank(share, [&] {
+        for (int p : patchOfWall)
+            if (p < 0 || static_cast<std::size_t>(p) >= patchNames.size())
+                throw FatalError(fmt::format("error: '{}': wall patch index {} has no name in patchNames", wallFile.string(), p));
+    });
     for (const std::string& keyword : boundaryDict.keywords()) {
         if (keyword == "FoamFile") continue;
         if (std::find(patchNames.begin(), patchNames.end(), keyword) == patchNames.end())
@@ -224,7 +251,7 @@ std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, 
         const Dictionary& patchDict = boundaryDict.subDict(name);
         boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
-    requireWallLayout(walls, boundaryDict, patchNames, boundaryModels, support, context.dx);
+    requireWallLayout(walls, boundaryDict, patchNames, boundaryModels, support, context.dx, share);
     const auto rank = [&](int patch) {
         return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);
     };
@@ -242,11 +269,13 @@ std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, 
     for (std::size_t p : patchOrder) {
         Patch<D> patch;
         patch.name = patchNames[p];
+        patch.wallField = static_cast<int>(p);
         patch.begin = begin;
         patch.end = begin + static_cast<std::size_t>(std::count(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)));
         begin = patch.end;
         patch.model = std::move(boundaryModels[p]);
-        fmt::print("Selecting boundary model for patch {} ({} particles): {}\n", patch.name, patch.end - patch.begin, patch.model->describe());
+        fmt::print("Selecting boundary model for patch {} ({} particles{}): {}\n", patch.name, patch.end - patch.begin, share ? " on this rank" : "",
+                   patch.model->describe());
         if (const Dictionary* motion = boundaryDict.subDict(patch.name).findSubDict("motion")) {
             patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
             fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
@@ -287,13 +316,13 @@ void selectIntegrator(const Dictionary& timeIntegration, const Dictionary& schem
 }  // namespace
 
 template <int D>
-CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start) {
+CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start, const StateShare<D>* share) {
     CaseSetup<D> setup;
     Dictionary schemes = readCaseDictionary(caseDirectory, "system/sphSchemes");
     Dictionary timeIntegration = readCaseDictionary(caseDirectory, "system/timeIntegration");
     Dictionary fluidDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
     Dictionary boundaryDict = readCaseDictionary(caseDirectory, "constant/boundaryProperties");
-    StartState<D> state = readStartState<D>(start, setup.header);
+    StartState<D> state = readStartState<D>(start, setup.header, share);
     const double dx = setup.header.spacing;
 
     const FluidProperties<D> properties = readFluidProperties<D>(fluidDict);
@@ -309,7 +338,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
 
     setup.patchNames = state.wallHeader.patchNames;
     std::vector<Patch<D>> patches =
-        selectPatches<D>(caseDirectory, boundaryDict, stateFile(start.path, "walls"), state.walls, setup.patchNames, context, support);
+        selectPatches<D>(caseDirectory, boundaryDict, stateFile(start.path, "walls"), state.walls, setup.patchNames, context, support, share);
     selectIntegrator<D>(timeIntegration, schemes, models.shifting.enabled(), setup);
 
     for (int d = 0; d < D; ++d)
@@ -329,13 +358,13 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
 }
 
 #ifdef SPHKIT_HAS_1D
-template CaseSetup<1> setUpCase<1>(const std::filesystem::path&, const TimeDirectory&);
+template CaseSetup<1> setUpCase<1>(const std::filesystem::path&, const TimeDirectory&, const StateShare<1>*);
 #endif
 #ifdef SPHKIT_HAS_2D
-template CaseSetup<2> setUpCase<2>(const std::filesystem::path&, const TimeDirectory&);
+template CaseSetup<2> setUpCase<2>(const std::filesystem::path&, const TimeDirectory&, const StateShare<2>*);
 #endif
 #ifdef SPHKIT_HAS_3D
-template CaseSetup<3> setUpCase<3>(const std::filesystem::path&, const TimeDirectory&);
+template CaseSetup<3> setUpCase<3>(const std::filesystem::path&, const TimeDirectory&, const StateShare<3>*);
 #endif
 
 }  // namespace sph

@@ -8,7 +8,10 @@
 #include "physics/FluidSystem.hpp"
 #include "timeIntegrators/TimeIntegrator.hpp"
 
+#include <functional>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace sph {
@@ -27,7 +30,23 @@ struct CaseSetup {
     std::vector<Dictionary> dictionaries;  // checked for unused keywords once everything is read
 };
 
+// How a rank of a decomposed run sets up its share of the case rather than the whole of it:
+// the particles it reads, and the checks that need every rank's particles.
 template <int D>
-CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start);
+struct StateShare {
+    // This rank's particles of a state file (FatalError on every rank for a bad file).
+    std::function<ParticleSet<D>(const std::filesystem::path& file, const std::string& setName, StateHeader& header)> read;
+    // Runs checks of this rank's particles; a FatalError on any rank stops every rank.
+    std::function<void(const std::function<void()>& checks)> checkOnEveryRank;
+    // Each entry its largest value over the ranks.
+    std::function<void(std::span<double>)> largestOverRanks;
+    // FatalError on every rank for two particles of one id in the whole state (checkPositions:
+    // or two at one position).
+    std::function<void(const ParticleSet<D>& share, const std::filesystem::path& file, bool checkPositions)> requireDistinct;
+};
+
+// The whole case, or with `share` this rank's share of its particles (the models and checks the same).
+template <int D>
+CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDirectory& start, const StateShare<D>* share = nullptr);
 
 }  // namespace sph

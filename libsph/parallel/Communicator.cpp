@@ -56,7 +56,7 @@ void Communicator::stopIfAnyFailed(const std::optional<std::string>& error) cons
     MPI_Bcast(&length, 1, MPI_INT, firstFailing, ranks_);
     message.resize(static_cast<std::size_t>(length));
     MPI_Bcast(message.data(), length, MPI_CHAR, firstFailing, ranks_);
-    throw FatalError("rank " + std::to_string(firstFailing) + " of " + std::to_string(size_) + ": " + message);
+    throw RanksStopped("rank " + std::to_string(firstFailing) + " of " + std::to_string(size_) + ": " + message);
 }
 
 std::vector<std::byte> Communicator::gatherToFirst(const std::vector<std::byte>& mine, std::vector<std::size_t>& fromRank) const {

@@ -16,6 +16,13 @@
 
 namespace sph::parallel {
 
+// A FatalError that every rank threw together (Communicator::stopIfAnyFailed), with the failing
+// rank's message: passed on as it is by an enclosing `together`.
+class RanksStopped : public FatalError {
+public:
+    using FatalError::FatalError;
+};
+
 // A message's length as MPI counts it (int); a message past 2 GiB would need a derived type,
 // which no exchange here comes near (a 3D particle with every field is under 300 bytes).
 int mpiByteCount(std::size_t bytes);
@@ -36,8 +43,8 @@ public:
     void broadcastFromFirst(std::span<double> values) const;
     std::string broadcastFromFirst(std::string text) const;
 
-    // Throws FatalError on every rank when any rank passes an error: the message is that of the
-    // lowest failing rank, prefixed with its number. Returns on every rank otherwise.
+    // Throws RanksStopped on every rank when any rank passes an error: the message is that of
+    // the lowest failing rank, prefixed with its number. Returns on every rank otherwise.
     void stopIfAnyFailed(const std::optional<std::string>& error) const;
 
     // Every rank sends toRank[r] to rank r and receives from each rank what it sent here:
@@ -64,6 +71,8 @@ void together(const Communicator& ranks, Body&& body) {
     std::optional<std::string> error;
     try {
         body();
+    } catch (const RanksStopped&) {
+        throw;  // thrown on every rank, already with the failing rank's number
     } catch (const FatalError& e) {
         error = e.what();
     }

@@ -1,6 +1,8 @@
 #include "parallel/DistributedSystem.hpp"
 
 #include "io/ParticleState.hpp"
+#include "motion/MovingWallPatch.hpp"
+#include "parallel/GatheredParticles.hpp"
 #include "parallel/ParticleMigration.hpp"
 #include "parallel/RcbPartition.hpp"
 
@@ -52,38 +54,49 @@ DistributedSystem<D>::DistributedSystem(const Communicator& ranks, FluidSystem<D
       system_(system),
       skin_(skinPerSupport * system.supportRadius()),
       wallsMove_(std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.motion != nullptr; })),
-      width_(haloReach(system) + skin_),
+      // A model's reach may follow from the walls it holds (mDBC's deepest layer).
+      width_(ranks.maxOverRanks(haloReach(system)) + skin_),
       wallWeight_(wallWeight),
       boxes_({}, Vec<D>::Zero()) {
-    // Every rank holds the whole case: each hands Zoltan every size-th particle.
-    const auto stride = static_cast<std::size_t>(ranks.size());
-    std::vector<std::uint32_t> fluidSample, wallSample;
-    for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < system.fluid.size(); i += stride)
-        fluidSample.push_back(static_cast<std::uint32_t>(i));
-    for (std::size_t i = static_cast<std::size_t>(ranks.rank()); i < system.walls.size(); i += stride)
-        wallSample.push_back(static_cast<std::uint32_t>(i));
-    partition(fluidSample, wallSample, 1.0);
+    std::vector<std::uint32_t> fluidPlaces(system.fluid.size()), wallPlaces(system.walls.size());
+    std::iota(fluidPlaces.begin(), fluidPlaces.end(), 0u);
+    std::iota(wallPlaces.begin(), wallPlaces.end(), 0u);
+    partition(fluidPlaces, wallPlaces, 1.0);
 
-    // The serial order of the state as read is its storage order.
-    ParticleSet<D> fluid = system.fluid, walls = system.walls;
-    for (ParticleSet<D>* set : {&fluid, &walls}) {
-        // Written, so that a restart from pieces finds the serial order.
-        set->add(fields::orderCell, 0);
-        auto& rank = set->add(fields::orderRank, 0);
-        std::iota(rank.begin(), rank.end(), 0);
-    }
-    for (auto& [set, owned] : {std::pair{&fluid, &fluidOwned_}, std::pair{&walls, &wallsOwned_}}) {
-        std::vector<std::uint32_t> mine;
-        for (std::size_t i = 0; i < set->size(); ++i)
-            if (boxes_.ownerOf(set->position[i]) == ranks.rank()) mine.push_back(static_cast<std::uint32_t>(i));
-        set->keep(mine);
-    }
+    ParticleSet<D> fluid = std::move(system.fluid), walls = std::move(system.walls);
+    // The serial run sorts its walls by patch, in the patches' order, keeping the state's order
+    // within each: a wall's orderCell is its patch's place.
+    auto& wallPatchPlace = walls[fields::orderCell];
+    for (std::size_t p = 0; p < system.patches.size(); ++p)
+        std::fill(wallPatchPlace.begin() + static_cast<std::ptrdiff_t>(system.patches[p].begin),
+                  wallPatchPlace.begin() + static_cast<std::ptrdiff_t>(system.patches[p].end), static_cast<int>(p));
+    migrateParticles(ranks, fluid, boxes_);
+    migrateParticles(ranks, walls, boxes_);
+    agreeOnSurfacesAlongCurves(walls);
     fluidHalos_.emplace(shareWithNeighbours(fluid, fluidOwned_));
     wallHalos_.emplace(shareWithNeighbours(walls, wallsOwned_));
     system.adoptParticles(std::move(fluid), std::move(walls));
     positionsAtRedistribution_ = system.fluid.position;
     wallPositionsAtRedistribution_ = system.walls.position;
     refreshWithinEvaluations();
+}
+
+template <int D>
+void DistributedSystem<D>::agreeOnSurfacesAlongCurves(const ParticleSet<D>& walls) {
+    for (std::size_t p = 0; p < system_.patches.size(); ++p) {
+        Patch<D>& patch = system_.patches[p];
+        if (!patch.motion || !patch.motion->deforms()) continue;
+        std::vector<std::uint32_t> mine;
+        const auto& place = walls[fields::orderCell];
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            if (place[w] == static_cast<int>(p)) mine.push_back(static_cast<std::uint32_t>(w));
+        ParticleSet<D> patchWalls = walls;
+        patchWalls.keep(mine);
+        gatherToFirst(ranks_, patchWalls);
+        std::array<double, 1> alongCurve{ranks_.rank() == 0 && surfaceAlongCurve(patchWalls, 0, patchWalls.size()) ? 1.0 : 0.0};
+        ranks_.broadcastFromFirst(alongCurve);
+        patch.surfaceAlongCurve = alongCurve[0] > 0.0;
+    }
 }
 
 template <int D>

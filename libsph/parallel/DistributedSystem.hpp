@@ -39,8 +39,10 @@ public:
     // than half of it between two builds (largestDisplacement).
     static constexpr double skinPerSupport = 0.2;
 
-    // Collective. Every rank holds the whole case in `system`, as read; keeps this rank's share.
-    // Walls weigh `wallWeight` fluid particles in the partition.
+    // Collective. Each rank holds a share of the case in `system` (every particle on one rank,
+    // StateShare), each particle's place in the serial order in the fields orderCell and
+    // orderRank; keeps the particles its box holds, and copies of the others' within the halo
+    // width. Walls weigh `wallWeight` fluid particles in the partition.
     DistributedSystem(const Communicator& ranks, FluidSystem<D>& system, double wallWeight = 0.1);
 
     // Collective. Every fluid particle (and wall particle of a moving patch) to the rank that
@@ -95,6 +97,9 @@ private:
     // only on entry) in the serial order after; returns the exchange that refreshes the copies.
     HaloExchange<D> shareWithNeighbours(ParticleSet<D>& set, std::vector<char>& owned);
     void numberByCell(ParticleSet<D>& fluid) const;
+    // Whether each deforming patch's surface runs along one curve (FluidSystem's patch flag),
+    // decided on rank 0 from the whole patch: a share of it has gaps.
+    void agreeOnSurfacesAlongCurves(const ParticleSet<D>& walls);
     void refreshWithinEvaluations();
     // What the SUNDIALS integrators need to advance this rank's share (StateOverRanks).
     void shareStateWithSundials();

@@ -18,6 +18,7 @@
 #include "parallel/GatheredFunctionObjects.hpp"
 #include "parallel/GatheredParticles.hpp"
 #include "parallel/ParticlePieces.hpp"
+#include "parallel/ShareOfCase.hpp"
 
 #include <fmt/format.h>
 
@@ -294,7 +295,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
 template <int D>
 void runOfDimension(const Communicator& ranks, const std::filesystem::path& caseDirectory, const Dictionary& controlDict, const TimeDirectory& start,
                     RunMode mode, std::optional<int> threads, double balanceThreshold) {
-    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+    CaseSetup<D> setup = setUpShareOfCase<D>(ranks, caseDirectory, start);
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;

@@ -16,8 +16,9 @@
 // boundary model, walls fixed, with a prescribed motion or free bodies (halos as wide as
 // BoundaryModel::reach; a free body's loads summed in the serial order); continuity or summation
 // density; periodic directions; any kernel, viscosity and density diffusion; particle shifting.
-// Every rank reads the whole start state (issue 23). The boxes are made again when the ranks'
-// measured work drifts apart (CostBalance).
+// Each rank reads and sets up a share of the start state (ShareOfCase): no rank holds the whole
+// of it (rank 0 does where the case has function objects: GatheredFunctionObjects). The boxes
+// are made again when the ranks' measured work drifts apart (CostBalance).
 #pragma once
 
 #include "driver/Simulation.hpp"

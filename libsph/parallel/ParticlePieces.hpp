@@ -21,7 +21,9 @@ void writeParticlePieces(const Communicator& ranks, const std::filesystem::path&
                          const StateHeader& header);
 
 // Collective. `index` is the .pvtu; FatalError on every rank for a missing or unreadable piece,
-// or pieces that disagree on the time, the step or the fields.
+// or pieces that disagree on the time, the step or the fields. Each particle carries its place
+// in the serial order (orderCell, orderRank): as written by a decomposed run, or else the
+// pieces' order, as a serial run reads them.
 template <int D>
 ParticleSet<D> readParticlePieces(const Communicator& ranks, const std::filesystem::path& index, const std::string& setName, StateHeader& header);
 

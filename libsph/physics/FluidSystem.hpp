@@ -164,7 +164,6 @@ private:
     bool wallDensityEvolves_ = false;
     bool keepsUncorrectedAcceleration_ = false;
     bool wallsMove_ = false;
-    std::vector<int> patchOfWalls_;    // per patch: the value its walls hold in the patch field (-1: none)
     std::size_t wallParticleEnd_ = 0;  // walls [0, wallParticleEnd_) enter the kernel sums
     CellLinkedList<D> fluidCells_;
     CellLinkedList<D> wallCells_;

@@ -70,9 +70,6 @@ FluidSystem<D>::FluidSystem(FluidModels<D> models, ParticleSet<D> fluidSet, Part
         for (std::size_t w = 0; w < walls.size(); ++w) area[w] = std::pow(spacing[w], D - 1);
     }
     if (viscous()) walls.add(fields::viscousVelocity, Vec<D>::Zero(), false);
-    // A patch's walls carry its index in the case's patch list; the patches run in wall order.
-    for (const Patch<D>& patch : patches)
-        patchOfWalls_.push_back(patch.end > patch.begin && walls.has(fields::patch) ? walls[fields::patch][patch.begin] : -1);
     indexWalls();
     for (Patch<D>& patch : patches) {
         wallDensityEvolves_ = wallDensityEvolves_ || patch.model->evolvesWallDensity();
@@ -121,7 +118,7 @@ void FluidSystem<D>::adoptParticles(ParticleSet<D> fluidSet, ParticleSet<D> wall
     std::size_t begin = 0;
     for (std::size_t p = 0; p < patches.size(); ++p) {
         patches[p].begin = begin;
-        patches[p].end = begin + static_cast<std::size_t>(std::count(patchOfWall.begin(), patchOfWall.end(), patchOfWalls_[p]));
+        patches[p].end = begin + static_cast<std::size_t>(std::count(patchOfWall.begin(), patchOfWall.end(), patches[p].wallField));
         begin = patches[p].end;
     }
     if (!patches.empty() && begin != walls.size()) throw std::logic_error("adoptParticles: walls of no patch, or of a patch that had none");

@@ -19,6 +19,7 @@ struct Patch {
     std::optional<CellLinkedList<D>> cells;  // the patch's particles, for wall-force models
     std::unique_ptr<PatchMotion<D>> motion;  // prescribed motion; none for a fixed patch
     bool surfaceAlongCurve = false;          // a deforming 2D patch whose normals follow its chords
+    int wallField = -1;                      // the value its walls hold in the field `patch` (-1: none)
 };
 
 }  // namespace sph

@@ -256,6 +256,22 @@ class ParallelRun(unittest.TestCase):
                     for name, values in serial.items():
                         self.assertTrue(np.array_equal(values, restarted[name]), f"{part} '{name}' after a serial restart from {first} ranks")
 
+    def test_each_rank_reads_only_its_own_pieces(self):
+        """Restarted on 2 ranks from 2 pieces with the second piece damaged: rank 1 alone reads it,
+        and its message stops both ranks (rank 0 never opened it)."""
+        case = self.case("damBreak2D", 0.002, 0.001)
+        self.run_case(case, 2)
+        with open(os.path.join(case, "0.002", "fluid_1.vtu"), "r+b") as piece:
+            piece.seek(200)
+            piece.write(b"damaged" * 40)
+        edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+[^;]+;", "endTime 0.003;")
+        run = self.run_case(case, 2, expect_success=False)
+        self.assertNotEqual(run.returncode, 0)
+        message = run.stdout + run.stderr
+        self.assertIn("rank 1 of 2: ", message)
+        self.assertIn("fluid_1.vtu", message)
+        self.assertNotIn("rank 0 of 2: ", message)
+
     def test_the_output_opens_in_paraview_as_one_series(self):
         case = self.case("damBreak2D", 0.002, 0.001)
         self.run_case(case, 2)

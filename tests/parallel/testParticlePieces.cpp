@@ -1,9 +1,12 @@
 // A state in pieces: written by some ranks, read back by as many, fewer or more, every particle
-// with every field and the header; the .pvtu opens in VTK's parallel reader as one data set;
-// a missing piece stops every rank with its name.
+// with every field and the header, and its place in the order a serial run reads the pieces in;
+// the .pvtu opens in VTK's parallel reader as one data set; a missing piece stops every rank with
+// its name. Two particles of one id, or at one place, on different ranks stop every rank.
 #include "core/FatalError.hpp"
+#include "io/ParticleState.hpp"
 #include "parallel/ParticleMigration.hpp"
 #include "parallel/ParticlePieces.hpp"
+#include "parallel/ShareOfCase.hpp"
 #include "parallel/TestLattice.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +16,10 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPUnstructuredGridReader.h>
 
+#include <fmt/format.h>
+
+#include <array>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -102,6 +109,72 @@ TEST(ParticlePieces, AStateWrittenOnSomeRanksIsReadBackOnAnyNumberWhole) {
             EXPECT_EQ(declaredPointArrays(directory / "fluid.pvtu"), declaredPointArrays(directory / "fluid_0.vtu"));
         }
     }
+}
+
+TEST(ParticlePieces, PiecesWithoutASerialOrderTakeTheOrderASerialRunReadsThemIn) {
+    const Communicator world;
+    for (const int writers : {world.size(), 1}) {
+        const std::filesystem::path directory = sharedDirectory(world, "order" + std::to_string(writers));
+        writeOnFirstRanks(world, writers, directory);
+        MPI_Barrier(world.handle());
+        StateHeader header;
+        const ParticleSet<2> set = readParticlePieces<2>(world, directory / "fluid.pvtu", "fluid", header);
+        ASSERT_TRUE(set.has(fields::orderCell) && set.has(fields::orderRank));
+        std::vector<std::byte> mine;
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            const std::array<std::int64_t, 3> entry{set.globalId[i], set[fields::orderCell][i], set[fields::orderRank][i]};
+            const auto* bytes = reinterpret_cast<const std::byte*>(entry.data());
+            mine.insert(mine.end(), bytes, bytes + sizeof(entry));
+        }
+        std::vector<std::size_t> fromRank;
+        const std::vector<std::byte> all = world.gatherToFirst(mine, fromRank);
+        if (world.rank() != 0) continue;
+        std::map<std::int64_t, std::pair<std::int64_t, std::int64_t>> placeOfId;
+        for (std::size_t at = 0; at < all.size(); at += sizeof(std::array<std::int64_t, 3>)) {
+            std::array<std::int64_t, 3> entry;
+            std::memcpy(entry.data(), all.data() + at, sizeof(entry));
+            placeOfId[entry[0]] = {entry[1], entry[2]};
+        }
+        StateHeader serialHeader;
+        const ParticleSet<2> serial = readParticleState<2>(directory / "fluid.pvtu", "fluid", serialHeader);
+        ASSERT_EQ(placeOfId.size(), serial.size());
+        for (std::size_t k = 0; k < serial.size(); ++k)
+            EXPECT_EQ(placeOfId[serial.globalId[k]], std::make_pair(std::int64_t{0}, static_cast<std::int64_t>(k))) << writers << " writers";
+    }
+}
+
+TEST(ParticlePieces, TwoParticlesOfOneIdOrPlaceOnDifferentRanksStopEveryRank) {
+    const Communicator world;
+    const auto share = [&] {
+        ParticleSet<2> set("fluid");
+        set.resize(3);
+        for (std::size_t k = 0; k < 3; ++k) {
+            set.globalId[k] = 10 * world.rank() + static_cast<std::int64_t>(k);
+            set.position[k] = Vec<2>(0.01 * static_cast<double>(set.globalId[k]), 0.0);
+        }
+        return set;
+    };
+    const auto failure = [&](const ParticleSet<2>& set) {
+        try {
+            requireDistinctOverRanks(world, set, "fluid.vtu", true);
+        } catch (const FatalError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(failure(share()), "");
+    const bool last = world.rank() == world.size() - 1;
+    ParticleSet<2> sameId = share();
+    if (last) sameId.globalId[2] = 0;               // rank 0's first
+    const std::string idFailure = failure(sameId);  // collective: called once on every rank
+    EXPECT_NE(idFailure.find("'fluid.vtu': two particles have the same id 0"), std::string::npos) << idFailure;
+    ParticleSet<2> samePlace = share();
+    if (last) samePlace.position[2] = Vec<2>(0.01, 0.0);  // rank 0's second
+    const std::string expected = fmt::format("particle ids 1 and {} are at the same position (0.01 0)", 10 * (world.size() - 1) + 2);
+    const std::string placeFailure = failure(samePlace);
+    EXPECT_NE(placeFailure.find(expected), std::string::npos) << placeFailure;
+    // Wall particles may coincide (patches that meet share a corner).
+    EXPECT_NO_THROW(requireDistinctOverRanks(world, samePlace, "walls.vtu", false));
 }
 
 TEST(ParticlePieces, AMissingPieceStopsEveryRankNamingIt) {

@@ -2,8 +2,8 @@
 // mpirun starts (issue 23), measured with the solver's own DistributedSystem: owned and halo
 // particles per rank, the ranks each exchanges with, the bytes and messages the halo exchanges
 // send in one evaluation of the rates, the load imbalance, and the memory per rank. The figures
-// feed the weak-scaling model of doc/performance.md. Every rank reads the case, as the solver
-// does so far.
+// feed the weak-scaling model of doc/performance.md. Each rank reads its share of the case, as
+// the solver does.
 #include "core/ExitOnError.hpp"
 #include "core/FatalError.hpp"
 #include "core/FieldBytes.hpp"
@@ -12,6 +12,7 @@
 #include "parallel/Communicator.hpp"
 #include "parallel/DistributedSystem.hpp"
 #include "parallel/RcbPartition.hpp"
+#include "parallel/ShareOfCase.hpp"
 
 #include <fmt/format.h>
 
@@ -44,7 +45,7 @@ void report(const sph::parallel::Communicator& ranks, const std::filesystem::pat
     using namespace sph;
     const Dictionary controlDict = readCaseDictionary(caseDirectory, "system/controlDict");
     const TimeDirectory start = selectStartTime(caseDirectory, controlDict);
-    CaseSetup<D> setup = setUpCase<D>(caseDirectory, start);
+    CaseSetup<D> setup = parallel::setUpShareOfCase<D>(ranks, caseDirectory, start);
     FluidSystem<D>& system = *setup.system;
     const parallel::DistributedSystem<D> shared(ranks, system, wallWeight);
     const std::size_t bytesBefore = shared.haloBytesSent(), messagesBefore = shared.haloMessagesSent();
