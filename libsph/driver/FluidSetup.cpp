@@ -274,8 +274,9 @@ std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, 
         patch.end = begin + static_cast<std::size_t>(std::count(sortedPatch.begin(), sortedPatch.end(), static_cast<int>(p)));
         begin = patch.end;
         patch.model = std::move(boundaryModels[p]);
-        fmt::print("Selecting boundary model for patch {} ({} particles{}): {}\n", patch.name, patch.end - patch.begin, share ? " on this rank" : "",
-                   patch.model->describe());
+        // A share's count is of the particles this rank read, not of those it will own: left out.
+        const std::string count = share ? "" : fmt::format(" ({} particles)", patch.end - patch.begin);
+        fmt::print("Selecting boundary model for patch {}{}: {}\n", patch.name, count, patch.model->describe());
         if (const Dictionary* motion = boundaryDict.subDict(patch.name).findSubDict("motion")) {
             patch.motion = selectByType(makePatchMotionRegistry<D>(), *motion, *motion, caseDirectory.string());
             fmt::print("Selecting motion for patch {}: {}\n", patch.name, patch.motion->describe());
