@@ -39,6 +39,11 @@ template std::array<LatticeAxis, 1> boxAxes<1>(const Dictionary&, const Vec<1>&,
 template std::array<LatticeAxis, 2> boxAxes<2>(const Dictionary&, const Vec<2>&, const Vec<2>&, double, std::vector<std::string>&);
 template std::array<LatticeAxis, 3> boxAxes<3>(const Dictionary&, const Vec<3>&, const Vec<3>&, double, std::vector<std::string>&);
 
+std::pair<long, long> LatticeShare::rows(long first, long last) const {
+    const long rowCount = last - first + 1;
+    return {first + rowCount * rank / count, first + rowCount * (rank + 1) / count - 1};
+}
+
 std::string LatticeAxis::note(int axis) const {
     if (whole) return "";
     const double last = count == 1 ? 0.0 : (hi - lo) / dx - (count - 1);
@@ -48,43 +53,50 @@ std::string LatticeAxis::note(int axis) const {
 
 namespace {
 
+// The lattice points of the share's rows, the first axis fastest.
 template <int D>
-void forEachLatticePoint(const std::array<LatticeAxis, D>& axes, const std::function<void(const Vec<D>&)>& visit) {
+void forEachLatticePoint(const std::array<LatticeAxis, D>& axes, const LatticeShare& share, const std::function<void(const Vec<D>&)>& visit) {
+    constexpr auto last = static_cast<std::size_t>(D - 1);
+    const auto [firstRow, lastRow] = share.rows(0, axes[last].count - 1);
+    if (firstRow > lastRow) return;
     std::array<int, D> index{};
+    index[last] = static_cast<int>(firstRow);
     while (true) {
         Vec<D> x;
         for (int d = 0; d < D; ++d) x[d] = axes[static_cast<std::size_t>(d)](index[static_cast<std::size_t>(d)]);
         visit(x);
-        int d = 0;
-        for (; d < D; ++d) {
-            if (++index[static_cast<std::size_t>(d)] < axes[static_cast<std::size_t>(d)].count) break;
-            index[static_cast<std::size_t>(d)] = 0;
+        std::size_t d = 0;
+        for (; d < last; ++d) {
+            if (++index[d] < axes[d].count) break;
+            index[d] = 0;
         }
-        if (d == D) return;
+        if (d == last && ++index[last] > lastRow) return;
     }
 }
 
 template <int D>
-std::vector<Vec<D>> fillBox(const Dictionary& region, double dx, std::vector<std::string>& notes) {
+std::vector<Vec<D>> fillBox(const Dictionary& region, double dx, const LatticeShare& share, std::vector<std::string>& notes) {
     const Vec<D> lo = region.getVector<D>("min"), hi = region.getVector<D>("max");
     const std::array<LatticeAxis, D> axes = boxAxes<D>(region, lo, hi, dx, notes);
-    double particles = 1.0;
-    for (const LatticeAxis& axis : axes) particles *= axis.count;
+    const auto [firstRow, lastRow] = share.rows(0, axes.back().count - 1);
+    double particles = static_cast<double>(std::max(0L, lastRow - firstRow + 1));
+    for (std::size_t d = 0; d + 1 < axes.size(); ++d) particles *= axes[d].count;
     requireMemory(particles * solverBytesPerParticle,
                   fmt::format("{}: the fluid box of {:.3g} particles at spacing {:g}", region.where().str(), particles, dx));
     std::vector<Vec<D>> points;
-    forEachLatticePoint<D>(axes, [&](const Vec<D>& x) { points.push_back(x); });
+    forEachLatticePoint<D>(axes, share, [&](const Vec<D>& x) { points.push_back(x); });
     return points;
 }
 
-// Lattice points of the whole domain for which `inside` holds.
+// Lattice points of the whole domain (the share's rows) for which `inside` holds.
 template <int D>
-std::vector<Vec<D>> fillShape(double dx, const Vec<D>& domainMin, const Vec<D>& domainMax, const std::function<bool(const Vec<D>&)>& inside) {
+std::vector<Vec<D>> fillShape(double dx, const GenerationDomain<D>& domain, const std::function<bool(const Vec<D>&)>& inside) {
     std::array<LatticeAxis, D> axes;  // the domain's spacings, checked by the generator to fit an int
     for (int d = 0; d < D; ++d)
-        axes[static_cast<std::size_t>(d)] = {domainMin[d], domainMax[d], dx, static_cast<int>(std::floor((domainMax[d] - domainMin[d]) / dx)), true};
+        axes[static_cast<std::size_t>(d)] = {domain.min[d], domain.max[d], dx, static_cast<int>(std::floor((domain.max[d] - domain.min[d]) / dx)),
+                                             true};
     std::vector<Vec<D>> points;
-    forEachLatticePoint<D>(axes, [&](const Vec<D>& x) {
+    forEachLatticePoint<D>(axes, domain.share, [&](const Vec<D>& x) {
         if (inside(x)) points.push_back(x);
     });
     return points;
@@ -118,15 +130,15 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
         {"the box's own lattice, anchored at min; an extent not a whole number of dx adjusts the last spacing (dx/2 to 3dx/2, with a note); 1D-3D",
          "",
          {{"min", "", "lower corner"}, {"max", "", "upper corner"}, velocityDoc}},
-        [](const Dictionary& region, double dx, const GenerationDomain<D>&, std::vector<std::string>& notes) {
-            return fillBox<D>(region, dx, notes);
+        [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>& notes) {
+            return fillBox<D>(region, dx, domain.share, notes);
         });
     const auto ellipse = [](const Dictionary& region, double dx, const GenerationDomain<D>& domain,
                             std::vector<std::string>&) -> std::vector<Vec<D>> {
         if constexpr (D == 2) {
             const Vec<2> centre = region.getVector<2>("centre");
             const Vec<2> axes = semiAxesOf(region);
-            return fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) {
+            return fillShape<2>(dx, domain, [&](const Vec<2>& x) {
                 return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
             });
         } else {
@@ -143,7 +155,7 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
                      if constexpr (D == 2) {
                          const std::vector<Vec<2>> polygon = region.getVectorList<2>("points");
                          if (polygon.size() < 3) region.fail("points", "a polygon needs at least 3 points");
-                         return fillShape<2>(dx, domain.min, domain.max, [&](const Vec<2>& x) { return insideLoop(polygon, x); });
+                         return fillShape<2>(dx, domain, [&](const Vec<2>& x) { return insideLoop(polygon, x); });
                      } else {
                          shapeForOtherDimensions(region, "fluid region", "2D", D);
                      }
@@ -158,7 +170,7 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
                    velocityDoc}},
                  [](const Dictionary& region, double dx, const GenerationDomain<D>& domain, std::vector<std::string>&) -> std::vector<Vec<D>> {
                      if constexpr (D >= 2)
-                         return fillSurface<D>(region, dx, domain.caseDirectory, domain.min, domain.max);
+                         return fillSurface<D>(region, dx, domain);
                      else
                          shapeForOtherDimensions(region, "fluid region", "2D and 3D", D);
                  });

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sph {
@@ -35,12 +36,22 @@ struct FluidRegionParticles {
     std::vector<std::string> notes;                           // adjusted spacings, for the user to read
 };
 
-// What a shape is generated within: the domain (its lattice is anchored at min) and the case
-// directory, which file names are relative to.
+// The rows of a lattice's last axis (y in 2D, z in 3D: the slowest in the filling order) that
+// one of `count` generators fills (generateParticles -parallel); one fills them all.
+struct LatticeShare {
+    int rank = 0, count = 1;
+    // This share's rows of [first, last]: consecutive, the shares in rank order (empty where
+    // the first returned exceeds the last).
+    std::pair<long, long> rows(long first, long last) const;
+};
+
+// What a shape is generated within: the domain (its lattice is anchored at min), the case
+// directory, which file names are relative to, and the share of the lattice to fill.
 template <int D>
 struct GenerationDomain {
     Vec<D> min, max;
     std::filesystem::path caseDirectory;
+    LatticeShare share = {};
 };
 
 // A shape declared for other dimensions than the case's (`what`: "fluid region", "wall patch"),

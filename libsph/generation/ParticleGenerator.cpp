@@ -7,15 +7,18 @@
 #include "generation/FluidRegions.hpp"
 #include "generation/WallPatches.hpp"
 #include "io/ParticleFile.hpp"
+#include "io/ParticleState.hpp"
 #include "neighbourSearch/CellLinkedList.hpp"
 #include "physics/FluidProperties.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <functional>
+#include <numeric>
+#include <optional>
+#include <regex>
 
 namespace sph {
 
@@ -26,32 +29,58 @@ bool insideDomain(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
     return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
 }
 
-// A warning when fluid particles [first, end) of a region lie beyond the box around every wall
-// particle, in a direction that is not periodic: fluid put beside the tank rather than in it
-// (not an error: walls may be obstacles in an open domain).
-template <int D>
-std::string outsideTheWalls(const std::string& region, const std::vector<Vec<D>>& fluid, std::size_t first, const std::vector<Vec<D>>& walls,
-                            const std::vector<double>& periodic, double dx) {
-    if (walls.empty()) return "";
-    Vec<D> lo = walls.front(), hi = walls.front();
-    for (const Vec<D>& w : walls) {
-        lo = lo.cwiseMin(w);
-        hi = hi.cwiseMax(w);
-    }
-    std::size_t outside = 0;
-    for (std::size_t i = first; i < fluid.size(); ++i)
-        for (int d = 0; d < D; ++d)
-            if ((periodic.empty() || periodic[static_cast<std::size_t>(d)] == 0.0) &&
-                (fluid[i][d] < lo[d] - 0.5 * dx || fluid[i][d] > hi[d] + 0.5 * dx)) {
-                ++outside;
-                break;
-            }
-    if (outside == 0) return "";
-    return fmt::format(
-        "fluid region '{}' has {} of its {} particles outside the box around the wall particles, from ({:g}) to ({:g}): "
-        "is it outside the tank?",
-        region, outside, fluid.size() - first, fmt::join(lo.data(), lo.data() + D, " "), fmt::join(hi.data(), hi.data() + D, " "));
+// Each entry summed over the generators of a share (as it is without one).
+std::vector<double> sumOverShares(const GenerationShare* share, const std::vector<double>& values) {
+    if (!share) return values;
+    const std::vector<double> all = share->gatherToAll(values);
+    std::vector<double> sums(values.size(), 0.0);
+    for (std::size_t k = 0; k < all.size(); ++k) sums[k % values.size()] += all[k];
+    return sums;
 }
+
+double largestOverShares(const GenerationShare* share, double value) {
+    if (!share) return value;
+    const std::vector<double> all = share->gatherToAll(std::span(&value, 1));
+    return *std::max_element(all.begin(), all.end());
+}
+
+// The box around every wall particle, and how many fluid particles [first, end) of a region lie
+// beyond it in a direction that is not periodic.
+template <int D>
+struct WallBox {
+    Vec<D> lo, hi;
+    bool empty;
+
+    explicit WallBox(const std::vector<Vec<D>>& walls) : lo(Vec<D>::Zero()), hi(Vec<D>::Zero()), empty(walls.empty()) {
+        if (empty) return;
+        lo = hi = walls.front();
+        for (const Vec<D>& w : walls) {
+            lo = lo.cwiseMin(w);
+            hi = hi.cwiseMax(w);
+        }
+    }
+
+    std::size_t countOutside(const std::vector<Vec<D>>& fluid, std::size_t first, const std::vector<double>& periodic, double dx) const {
+        std::size_t outside = 0;
+        for (std::size_t i = first; !empty && i < fluid.size(); ++i)
+            for (int d = 0; d < D; ++d)
+                if ((periodic.empty() || periodic[static_cast<std::size_t>(d)] == 0.0) &&
+                    (fluid[i][d] < lo[d] - 0.5 * dx || fluid[i][d] > hi[d] + 0.5 * dx)) {
+                    ++outside;
+                    break;
+                }
+        return outside;
+    }
+
+    // A warning for fluid put beside the tank rather than in it (not an error: walls may be
+    // obstacles in an open domain).
+    std::string warning(const std::string& region, std::size_t outside, std::size_t particles) const {
+        return fmt::format(
+            "fluid region '{}' has {} of its {} particles outside the box around the wall particles, from ({:g}) to ({:g}): "
+            "is it outside the tank?",
+            region, outside, particles, fmt::join(lo.data(), lo.data() + D, " "), fmt::join(hi.data(), hi.data() + D, " "));
+    }
+};
 
 // Two patches that lay most of their particles on each other: one patch listed twice under two
 // names (patches that meet share a corner or an edge, a small part of either).
@@ -212,6 +241,8 @@ struct GeneratedFluid {
     std::vector<Vec<D>> positions, velocities;
     std::vector<double> surfaceHeight;     // per particle: the top of its region along -g
     std::vector<double> initialPressures;  // per particle, with initialPressure analytic
+    std::vector<double> regionSizes;       // per region: its particles (of this share)
+    std::vector<double> regionTops;        // per region: its top along -g (of every share)
     std::size_t dropped = 0;
     std::vector<std::string> warnings;
 };
@@ -225,44 +256,51 @@ Vec<D> upwards(const FluidProperties<D>& properties) {
 template <int D>
 GeneratedFluid<D> fillFluid(const Dictionary& dict, const LatticeDomain<D>& lattice, const GeneratedWalls<D>& walls,
                             const WallClearance<D>& clearOfTheWalls, const GenerationDomain<D>& shapeDomain, const std::string& initialPressure,
-                            const FluidProperties<D>& properties, std::vector<std::string>& notes) {
+                            const FluidProperties<D>& properties, const GenerationShare* share, std::vector<std::string>& notes) {
     GeneratedFluid<D> out;
     const Vec<D> up = upwards(properties);
     const Dictionary& fluid = dict.subDict("fluid");
+    const WallBox<D> wallBox(walls.particles.positions);
     for (const std::string& name : fluid.keywords()) {
         const Dictionary& region = fluid.subDict(name);
-        const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, lattice.dx, shapeDomain);
-        for (const std::string& note : filled.notes) notes.push_back(fmt::format("fluid region '{}': {}", name, note));
         double top = -std::numeric_limits<double>::infinity();
-        std::size_t first = out.positions.size();
-        for (const Vec<D>& latticePoint : filled.positions) {
-            if (!insideDomain<D>(latticePoint, lattice.lo, lattice.hi))
-                throw FatalError(region.where(), fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
-                                                             fmt::join(latticePoint, " "), fmt::join(lattice.lo, " "), fmt::join(lattice.hi, " ")));
-            const bool inSolid = std::any_of(walls.solids.begin(), walls.solids.end(), [&](const auto& solid) { return solid(latticePoint); });
-            const std::optional<Vec<D>> kept = inSolid ? std::nullopt : clearOfTheWalls(latticePoint);
-            if (!kept) {
-                ++out.dropped;
-                continue;
+        const std::size_t first = out.positions.size();
+        const auto fillRegion = [&] {
+            const FluidRegionParticles<D> filled = fillFluidRegion<D>(region, lattice.dx, shapeDomain);
+            for (const std::string& note : filled.notes) notes.push_back(fmt::format("fluid region '{}': {}", name, note));
+            for (const Vec<D>& latticePoint : filled.positions) {
+                if (!insideDomain<D>(latticePoint, lattice.lo, lattice.hi))
+                    throw FatalError(region.where(),
+                                     fmt::format("fluid region '{}' has a particle at ({:g}) outside the domain [({:g}), ({:g})]", name,
+                                                 fmt::join(latticePoint, " "), fmt::join(lattice.lo, " "), fmt::join(lattice.hi, " ")));
+                const bool inSolid = std::any_of(walls.solids.begin(), walls.solids.end(), [&](const auto& solid) { return solid(latticePoint); });
+                const std::optional<Vec<D>> kept = inSolid ? std::nullopt : clearOfTheWalls(latticePoint);
+                if (!kept) {
+                    ++out.dropped;
+                    continue;
+                }
+                const Vec<D> x = *kept;
+                out.positions.push_back(x);
+                out.velocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
+                if (initialPressure == "analytic") {
+                    if (!filled.initialField || !filled.initialField->hasPressure())
+                        dict.fail("initialPressure",
+                                  fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
+                                              "field (velocity {{ type taylorGreen; ... }}, say)",
+                                              name));
+                    out.initialPressures.push_back(filled.initialField->pressure(x, 0.0, {properties.rho0, properties.gravity}));
+                }
+                top = std::max(top, x.dot(up) + 0.5 * lattice.dx);
             }
-            const Vec<D> x = *kept;
-            out.positions.push_back(x);
-            out.velocities.push_back(filled.initialField ? filled.initialField->velocity(x, 0.0) : filled.velocity);
-            if (initialPressure == "analytic") {
-                if (!filled.initialField || !filled.initialField->hasPressure())
-                    dict.fail("initialPressure",
-                              fmt::format("'analytic' needs fluid region '{}' to take its velocity from a solution with a pressure "
-                                          "field (velocity {{ type taylorGreen; ... }}, say)",
-                                          name));
-                out.initialPressures.push_back(filled.initialField->pressure(x, 0.0, {properties.rho0, properties.gravity}));
-            }
-            top = std::max(top, x.dot(up) + 0.5 * lattice.dx);
-        }
-        out.surfaceHeight.resize(out.positions.size(), top);
-        if (out.positions.size() == first) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
-        if (const std::string outside = outsideTheWalls(name, out.positions, first, walls.particles.positions, lattice.periodic, lattice.dx);
-            !outside.empty())
-            out.warnings.push_back(outside);
+        };
+        share ? share->together(fillRegion) : fillRegion();
+        out.regionTops.push_back(largestOverShares(share, top));
+        out.surfaceHeight.resize(out.positions.size(), out.regionTops.back());
+        out.regionSizes.push_back(static_cast<double>(out.positions.size() - first));
+        const auto outsideOf = static_cast<double>(wallBox.countOutside(out.positions, first, lattice.periodic, lattice.dx));
+        const std::vector<double> counts = sumOverShares(share, {out.regionSizes.back(), outsideOf});
+        if (counts[0] == 0.0) throw FatalError(region.where(), fmt::format("fluid region '{}' holds no particle", name));
+        if (counts[1] > 0.0) out.warnings.push_back(wallBox.warning(name, static_cast<std::size_t>(counts[1]), static_cast<std::size_t>(counts[0])));
     }
     return out;
 }
@@ -341,8 +379,36 @@ ParticleSet<D> wallParticleSet(const GeneratedWalls<D>& generated, const Initial
     return walls;
 }
 
+// The fluid particles' ids: their places in the serial generator's order, region by region,
+// each region's lattice rows in order, so that the shares' particles of a region follow each
+// other in rank order.
+std::vector<std::int64_t> serialIds(const GenerationShare* share, const std::vector<double>& regionSizes) {
+    const std::size_t regions = regionSizes.size();
+    const std::vector<double> all = share ? share->gatherToAll(regionSizes) : regionSizes;
+    const auto rank = static_cast<std::size_t>(share ? share->rows.rank : 0);
+    std::vector<std::int64_t> ids;
+    double regionsBefore = 0.0;
+    for (std::size_t k = 0; k < regions; ++k) {
+        double before = regionsBefore;
+        for (std::size_t r = 0; r < rank; ++r) before += all[r * regions + k];
+        for (std::size_t j = 0; j < static_cast<std::size_t>(regionSizes[k]); ++j)
+            ids.push_back(static_cast<std::int64_t>(before) + static_cast<std::int64_t>(j));
+        for (std::size_t r = 0; regions > 0 && r < all.size() / regions; ++r) regionsBefore += all[r * regions + k];
+    }
+    return ids;
+}
+
+// The particles' places in the serial order, for a share's pieces: their ids.
 template <int D>
-GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory) {
+void addSerialPlaces(ParticleSet<D>& set) {
+    set.add(fields::orderCell, 0);
+    auto& place = set.add(fields::orderRank, 0);
+    for (std::size_t i = 0; i < set.size(); ++i) place[i] = static_cast<int>(set.globalId[i]);
+}
+
+template <int D>
+GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory,
+                           const GenerationShare* share) {
     const LatticeDomain<D> lattice = readLatticeDomain<D>(dict);
     const double dx = lattice.dx;
     const std::string initialPressure = dict.getOrDefault<std::string>("initialPressure", "none");
@@ -350,7 +416,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
         dict.fail("initialPressure", "expected none, hydrostatic or analytic, found '" + initialPressure + "'");
     const Dictionary fluidPropertiesDict = readCaseDictionary(caseDirectory, "constant/fluidProperties");
     const FluidProperties<D> properties = readFluidProperties<D>(fluidPropertiesDict);
-    const GenerationDomain<D> shapeDomain{lattice.lo, lattice.hi, caseDirectory};
+    const GenerationDomain<D> shapeDomain{lattice.lo, lattice.hi, caseDirectory, share ? share->rows : LatticeShare{}};
 
     // Walls first: fluid particles overlapping them are dropped.
     std::vector<std::string> notes;
@@ -361,12 +427,13 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     wallCells.build(walls.particles.positions);
     if (boundaries) requireDistinctPatches(*boundaries, walls.patchNames, walls.patchOf, walls.particles.positions, wallCells, dx);
     const GeneratedFluid<D> fluid =
-        fillFluid(dict, lattice, walls, WallClearance<D>(walls, wallCells, dx), shapeDomain, initialPressure, properties, notes);
+        fillFluid(dict, lattice, walls, WallClearance<D>(walls, wallCells, dx), shapeDomain, initialPressure, properties, share, notes);
 
     const InitialState<D> state{properties, initialPressure};
-    const ParticleSet<D> fluidSet = fluidParticleSet(fluid, state, dx);
-    const double highestSurface = fluid.surfaceHeight.empty() ? 0.0 : *std::max_element(fluid.surfaceHeight.begin(), fluid.surfaceHeight.end());
-    const ParticleSet<D> wallSet = wallParticleSet(walls, state, highestSurface, dx);
+    ParticleSet<D> fluidSet = fluidParticleSet(fluid, state, dx);
+    fluidSet.globalId = serialIds(share, fluid.regionSizes);
+    const double highestSurface = fluid.regionTops.empty() ? 0.0 : *std::max_element(fluid.regionTops.begin(), fluid.regionTops.end());
+    ParticleSet<D> wallSet = wallParticleSet(walls, state, highestSurface, dx);
 
     StateHeader header;
     header.dimension = D;
@@ -376,31 +443,58 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     header.periodic = lattice.periodic;
     dict.checkUnused();
     std::filesystem::create_directories(outputDirectory);
-    // Walls first: the solver takes a time directory with a fluid.vtu for a complete state.
+    // Walls first: the solver takes a time directory with a fluid state for a complete state.
     StateHeader wallHeader = header;
     wallHeader.patchNames = walls.patchNames;
-    writeParticleFile(outputDirectory / "walls.vtu", wallSet, wallHeader);
-    writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
-    return {D, fluidSet.size(), wallSet.size(), fluid.dropped, fluid.warnings, notes};
+    const std::vector<double> totals = sumOverShares(share, {static_cast<double>(fluidSet.size()), static_cast<double>(fluid.dropped)});
+    const GenerationSummary summary{D,    static_cast<std::size_t>(totals[0]), wallSet.size(), static_cast<std::size_t>(totals[1]), fluid.warnings,
+                                    notes};
+    if (!share) {
+        writeParticleFile(outputDirectory / "walls.vtu", wallSet, wallHeader);
+        writeParticleFile(outputDirectory / "fluid.vtu", fluidSet, header);
+        return summary;
+    }
+    const auto rank = static_cast<std::size_t>(share->rows.rank), count = static_cast<std::size_t>(share->rows.count);
+    std::vector<std::uint32_t> block(wallSet.size() * (rank + 1) / count - wallSet.size() * rank / count);
+    std::iota(block.begin(), block.end(), static_cast<std::uint32_t>(wallSet.size() * rank / count));
+    wallSet.keep(block);
+    for (ParticleSet<D>* set : {&wallSet, &fluidSet}) addSerialPlaces(*set);
+    writeParticlePiece(outputDirectory, "walls", share->rows.rank, share->rows.count, wallSet, wallHeader, share->together);
+    writeParticlePiece(outputDirectory, "fluid", share->rows.rank, share->rows.count, fluidSet, header, share->together);
+    return summary;
 }
 
 }  // namespace
 
-GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite) {
+GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite, const GenerationShare* share) {
     const Dictionary dict = readCaseDictionary(caseDirectory, "system/generateParticlesDict");
     const std::filesystem::path output = caseDirectory / "0";
-    if (!overwrite && std::filesystem::exists(output / "fluid.vtu"))
-        throw FatalError("error: '" + (output / "fluid.vtu").string() + "' exists; remove it (./Allclean) or pass -overwrite");
+    const std::filesystem::path existing = stateFile(output, "fluid");
+    if (!overwrite && std::filesystem::exists(existing))
+        throw FatalError("error: '" + existing.string() + "' exists; remove it (./Allclean) or pass -overwrite");
+    const bool first = !share || share->rows.rank == 0;
+    // The state replaced, in either form: a .pvtu left beside a new .vtu would be read instead.
+    const auto removeReplacedState = [&] {
+        if (!first || !std::filesystem::exists(output)) return;
+        for (const auto& entry : std::filesystem::directory_iterator(output)) {
+            static const std::regex stateFileName(R"((fluid|walls)(_[0-9]+)?\.p?vtu)");
+            if (std::regex_match(entry.path().filename().string(), stateFileName)) std::filesystem::remove(entry.path());
+        }
+    };
+    share ? share->together(removeReplacedState) : removeReplacedState();
     const int dimension = dict.get<int>("dimension");
     GenerationSummary summary;
     switch (dimension) {
-        case 1: summary = generate<1>(caseDirectory, dict, output); break;
-        case 2: summary = generate<2>(caseDirectory, dict, output); break;
-        case 3: summary = generate<3>(caseDirectory, dict, output); break;
+        case 1: summary = generate<1>(caseDirectory, dict, output, share); break;
+        case 2: summary = generate<2>(caseDirectory, dict, output, share); break;
+        case 3: summary = generate<3>(caseDirectory, dict, output, share); break;
         default: dict.fail("dimension", fmt::format("must be 1, 2 or 3, found {}", dimension));
     }
     // The later times of the state just replaced: the solver would resume from them.
-    if (overwrite) removeTimeDirectories(timesAfter(caseDirectory, 0.0));
+    const auto removeLaterTimes = [&] {
+        if (overwrite && first) removeTimeDirectories(timesAfter(caseDirectory, 0.0));
+    };
+    share ? share->together(removeLaterTimes) : removeLaterTimes();
     return summary;
 }
 

@@ -14,7 +14,11 @@
 // Mass is rho0 dx^D; the density follows the initial pressure through the equation of state.
 #pragma once
 
+#include "generation/FluidRegions.hpp"
+
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,8 +33,22 @@ struct GenerationSummary {
     std::vector<std::string> notes;     // what the generator adjusted (a box's last spacing)
 };
 
-// Writes <case>/0/; refuses to replace an existing 0/fluid.vtu unless `overwrite`, which also
-// removes the later times the solver wrote from the state replaced (it would resume from them).
-GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite);
+// One of several generators (generateParticles -parallel under mpirun): each fills its rows of
+// every fluid region's lattice (LatticeShare) and writes them as its piece of 0/fluid.pvtu; each
+// lays out every wall (a surface, small beside the fluid) and writes a block of them as its
+// piece of 0/walls.pvtu. The pieces carry each particle's place in the serial generator's order
+// (orderCell 0, orderRank its id), so that a run from them equals a run from the serial state.
+struct GenerationShare {
+    LatticeShare rows;
+    // Every rank's values, rank 0's first (each rank passes as many).
+    std::function<std::vector<double>(std::span<const double>)> gatherToAll;
+    // Runs `body` on this rank; a FatalError on any rank stops every rank with its message.
+    std::function<void(const std::function<void()>& body)> together;
+};
+
+// Writes <case>/0/ (with `share`, this rank's pieces; the summary counts every rank's
+// particles); refuses to replace an existing 0/ state unless `overwrite`, which also removes the
+// later times the solver wrote from the state replaced (it would resume from them).
+GenerationSummary generateParticles(const std::filesystem::path& caseDirectory, bool overwrite, const GenerationShare* share = nullptr);
 
 }  // namespace sph

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <tuple>
 #include <numbers>
 #include <vector>
 
@@ -70,10 +71,11 @@ std::vector<Vec<2>> resampleLoop(const std::vector<Vec<2>>& loop, double dx) {
     return resampled;
 }
 
-// Visits the domain's lattice points (anchored at its min corner) within [lower, upper].
+// Visits the domain's lattice points (anchored at its min corner) within [lower, upper], of the
+// share's rows.
 template <int D>
 void forEachLatticePointWithin(const Vec<D>& domainMin, const Vec<D>& domainMax, double dx, const Vec<D>& lower, const Vec<D>& upper,
-                               const std::function<void(const Vec<D>&)>& visit) {
+                               const std::function<void(const Vec<D>&)>& visit, const LatticeShare& share = {}) {
     std::array<long, 3> first{}, last{};
     for (int d = 0; d < D; ++d) {
         const auto dd = static_cast<std::size_t>(d);
@@ -81,6 +83,8 @@ void forEachLatticePointWithin(const Vec<D>& domainMin, const Vec<D>& domainMax,
         first[dd] = std::clamp(static_cast<long>(std::floor((lower[d] - domainMin[d]) / dx - 0.5)), 0L, cells);
         last[dd] = std::clamp(static_cast<long>(std::ceil((upper[d] - domainMin[d]) / dx - 0.5)), 0L, cells - 1);
     }
+    constexpr auto slowest = static_cast<std::size_t>(D - 1);
+    std::tie(first[slowest], last[slowest]) = share.rows(first[slowest], last[slowest]);
     for (long k = first[2]; k <= last[2]; ++k)
         for (long j = first[1]; j <= last[1]; ++j)
             for (long i = first[0]; i <= last[0]; ++i) {
@@ -188,13 +192,15 @@ Vec<D> normalOnSurface(const Surface& surface, const Vec<D>& x, double dx, bool 
 }
 
 template <int D>
-std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<D>& domainMin,
-                                const Vec<D>& domainMax) {
-    const auto surface = readBoundary<D>(region, caseDirectory);
+std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const GenerationDomain<D>& domain) {
+    const auto surface = readBoundary<D>(region, domain.caseDirectory);
     std::vector<Vec<D>> points;
-    forEachLatticePointWithin<D>(domainMin, domainMax, dx, surface->lower(), surface->upper(), [&](const Vec<D>& x) {
-        if (surface->inside(x) && !onSurface(*surface, x, dx)) points.push_back(x);
-    });
+    forEachLatticePointWithin<D>(
+        domain.min, domain.max, dx, surface->lower(), surface->upper(),
+        [&](const Vec<D>& x) {
+            if (surface->inside(x) && !onSurface(*surface, x, dx)) points.push_back(x);
+        },
+        domain.share);
     return points;
 }
 
@@ -261,8 +267,8 @@ WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const Wal
     return walls;
 }
 
-template std::vector<Vec<2>> fillSurface<2>(const Dictionary&, double, const std::filesystem::path&, const Vec<2>&, const Vec<2>&);
-template std::vector<Vec<3>> fillSurface<3>(const Dictionary&, double, const std::filesystem::path&, const Vec<3>&, const Vec<3>&);
+template std::vector<Vec<2>> fillSurface<2>(const Dictionary&, double, const GenerationDomain<2>&);
+template std::vector<Vec<3>> fillSurface<3>(const Dictionary&, double, const GenerationDomain<3>&);
 template WallPatchParticles<2> surfaceWalls<2>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<2>&,
                                                const Vec<2>&);
 template WallPatchParticles<3> surfaceWalls<3>(const Dictionary&, double, const WallLayout&, const std::filesystem::path&, const Vec<3>&,

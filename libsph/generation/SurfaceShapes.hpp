@@ -35,8 +35,7 @@
 namespace sph {
 
 template <int D>
-std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const std::filesystem::path& caseDirectory, const Vec<D>& domainMin,
-                                const Vec<D>& domainMax);
+std::vector<Vec<D>> fillSurface(const Dictionary& region, double dx, const GenerationDomain<D>& domain);
 
 template <int D>
 WallPatchParticles<D> surfaceWalls(const Dictionary& patch, double dx, const WallLayout& layout, const std::filesystem::path& caseDirectory,

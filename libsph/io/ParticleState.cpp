@@ -48,6 +48,18 @@ std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
 }
 
 template <int D>
+void writeParticlePiece(const std::filesystem::path& directory, const std::string& name, int rank, int count, const ParticleSet<D>& particles,
+                        const StateHeader& header, const std::function<void(const std::function<void()>&)>& together) {
+    together([&] { writeParticleFile(directory / fmt::format("{}_{}.vtu", name, rank), particles, header); });
+    together([&] {
+        if (rank != 0) return;
+        std::vector<std::string> pieces;
+        for (int r = 0; r < count; ++r) pieces.push_back(fmt::format("{}_{}.vtu", name, r));
+        writePvtu(directory / (name + ".pvtu"), writtenPointArrays(particles), pieces);
+    });
+}
+
+template <int D>
 ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::string& setName, StateHeader& header) {
     if (file.extension() != ".pvtu") return readParticleFile<D>(file, setName, header);
     const std::vector<std::filesystem::path> pieces = readPvtuPieces(file);
@@ -68,9 +80,11 @@ ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::s
     return set;
 }
 
-#define SPHKIT_INSTANTIATE(D)                                                                                     \
-    template ParticleSet<D> readParticleState<D>(const std::filesystem::path&, const std::string&, StateHeader&); \
-    template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);             \
+#define SPHKIT_INSTANTIATE(D)                                                                                                                  \
+    template ParticleSet<D> readParticleState<D>(const std::filesystem::path&, const std::string&, StateHeader&);                              \
+    template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);                                          \
+    template void writeParticlePiece<D>(const std::filesystem::path&, const std::string&, int, int, const ParticleSet<D>&, const StateHeader&, \
+                                        const std::function<void(const std::function<void()>&)>&);                                             \
     template std::vector<std::uint32_t> serialOrder<D>(const ParticleSet<D>&);
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)

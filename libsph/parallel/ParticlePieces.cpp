@@ -14,13 +14,8 @@ namespace sph::parallel {
 template <int D>
 void writeParticlePieces(const Communicator& ranks, const std::filesystem::path& directory, const std::string& name, const ParticleSet<D>& particles,
                          const StateHeader& header) {
-    together(ranks, [&] { writeParticleFile(directory / fmt::format("{}_{}.vtu", name, ranks.rank()), particles, header); });
-    together(ranks, [&] {
-        if (ranks.rank() != 0) return;
-        std::vector<std::string> pieces;
-        for (int r = 0; r < ranks.size(); ++r) pieces.push_back(fmt::format("{}_{}.vtu", name, r));
-        writePvtu(directory / (name + ".pvtu"), writtenPointArrays(particles), pieces);
-    });
+    writeParticlePiece(directory, name, ranks.rank(), ranks.size(), particles, header,
+                       [&](const std::function<void()>& stage) { together(ranks, stage); });
 }
 
 template <int D>

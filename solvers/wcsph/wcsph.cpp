@@ -10,6 +10,7 @@
 #ifdef SPHKIT_WITH_MPI
 #include "parallel/CostBalance.hpp"
 #include "parallel/ParallelRun.hpp"
+#include "parallel/RunOnRanks.hpp"
 
 #include <mpi.h>
 #endif
@@ -91,28 +92,10 @@ std::optional<int> parseThreadCount(const std::string& text) {
 }
 
 #ifdef SPHKIT_WITH_MPI
-// Errors of the parallel run are collective (every rank stops with the same message): rank 0
-// prints them, as it prints the log.
 int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool overwrite, std::optional<int> threads, double balanceThreshold) {
-    MPI_Init(nullptr, nullptr);
-    int status = 0;
-    {
-        const sph::parallel::Communicator ranks;
-        if (ranks.rank() != 0 && !std::freopen("/dev/null", "w", stdout)) status = 3;
-        bool failedQuietly = false;
-        if (status == 0)
-            status = sph::exitCodeOf([&] {
-                try {
-                    sph::parallel::runCaseInParallel(ranks, caseDirectory, mode, overwrite, threads, balanceThreshold);
-                } catch (const sph::FatalError&) {
-                    if (ranks.rank() == 0) throw;
-                    failedQuietly = true;
-                }
-            });
-        if (failedQuietly) status = 1;
-    }
-    MPI_Finalize();
-    return status;
+    return sph::parallel::runOnRanks([&](const sph::parallel::Communicator& ranks) {
+        sph::parallel::runCaseInParallel(ranks, caseDirectory, mode, overwrite, threads, balanceThreshold);
+    });
 }
 #endif
 

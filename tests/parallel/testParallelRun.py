@@ -256,6 +256,52 @@ class ParallelRun(unittest.TestCase):
                     for name, values in serial.items():
                         self.assertTrue(np.array_equal(values, restarted[name]), f"{part} '{name}' after a serial restart from {first} ranks")
 
+    def generated_state(self, case, part):
+        """A generated state's arrays, its pieces' joined, every array ordered by particle id."""
+        index = os.path.join(case, "0", part + ".pvtu")
+        if os.path.exists(index):
+            with open(index) as f:
+                sources = re.findall(r'Source="([^"]+)"', f.read())
+            pieces = [arrays(os.path.join(case, "0", source)) for source in sources]
+            state = {name: np.concatenate([piece[name] for piece in pieces]) for name in pieces[0]}
+        else:
+            state = arrays(os.path.join(case, "0", part + ".vtu"))
+        order = np.argsort(state["id"], kind="stable")
+        return {name: values[order] for name, values in state.items()}
+
+    def test_particles_generated_on_several_ranks(self):
+        """generateParticles -parallel: each rank's piece holds its rows of the fluid regions and a
+        block of the walls, and the particles, by id, are the serial generator's with every array
+        bit for bit (boxes, a shape, 2D and 3D, hydrostatic densities); their orderRank is their
+        id. The dam break run on 2 ranks from 3 generated pieces equals the serial run from the
+        serial state. A serial generation with -overwrite replaces the pieces."""
+        for name in ("damBreak2D", "ellipticalTank2D", "damBreak3D"):
+            case = self.case(name, 0.01, 0.01)
+            pieces = case + ".pieces"
+            shutil.copytree(case, pieces)
+            generated = subprocess.run([MPIEXEC, "-np", "3", "--oversubscribe", os.path.join(BIN, "generateParticles"), "-parallel", "-overwrite",
+                                        "-case", pieces], capture_output=True, text=True, env=ENV, timeout=300)
+            self.assertEqual(generated.returncode, 0, generated.stdout + generated.stderr)
+            self.assertIn("in 3 pieces", generated.stdout)
+            self.assertFalse(os.path.exists(os.path.join(pieces, "0", "fluid.vtu")))
+            for part in ("fluid", "walls"):
+                serial, shared = self.generated_state(case, part), self.generated_state(pieces, part)
+                self.assertEqual(sorted(shared), sorted([*serial, "orderCell", "orderRank"]), f"{name} {part}")
+                for array, values in serial.items():
+                    self.assertTrue(np.array_equal(values, shared[array]), f"{name} {part} '{array}'")
+                self.assertTrue(np.array_equal(shared["orderRank"], shared["id"]))
+            if name != "damBreak2D":
+                continue
+            serial_case = case + ".serial"
+            shutil.copytree(case, serial_case)
+            self.run_case(serial_case)
+            run = self.run_case(pieces, 2)
+            self.assertIn(f"from {pieces}/0", run.stdout)
+            self.assert_same_state(serial_case, pieces, "0.01", "on 2 ranks from generated pieces")
+            again = subprocess.run([os.path.join(BIN, "generateParticles"), "-overwrite", "-case", pieces], capture_output=True, env=ENV)
+            self.assertEqual(again.returncode, 0)
+            self.assertEqual(sorted(os.listdir(os.path.join(pieces, "0"))), ["fluid.vtu", "walls.vtu"])
+
     def test_each_rank_reads_only_its_own_pieces(self):
         """Restarted on 2 ranks from 2 pieces with the second piece damaged: rank 1 alone reads it,
         and its message stops both ranks (rank 0 never opened it)."""
