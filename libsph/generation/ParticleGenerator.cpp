@@ -8,7 +8,7 @@
 #include "generation/WallPatches.hpp"
 #include "io/ParticleFile.hpp"
 #include "io/ParticleState.hpp"
-#include "neighbourSearch/CellLinkedList.hpp"
+#include "neighbourSearch/SparseCellList.hpp"
 #include "physics/FluidProperties.hpp"
 
 #include <fmt/format.h>
@@ -86,7 +86,7 @@ struct WallBox {
 // names (patches that meet share a corner or an edge, a small part of either).
 template <int D>
 void requireDistinctPatches(const Dictionary& boundaries, const std::vector<std::string>& patchNames, const std::vector<int>& patchOf,
-                            const std::vector<Vec<D>>& positions, const CellLinkedList<D>& cells, double dx) {
+                            const std::vector<Vec<D>>& positions, const SparseCellList<D>& cells, double dx) {
     std::vector<std::size_t> total(patchNames.size(), 0);
     std::vector<std::vector<std::size_t>> shared(patchNames.size(), std::vector<std::size_t>(patchNames.size(), 0));
     for (std::size_t k = 0; k < positions.size(); ++k) {
@@ -127,8 +127,8 @@ LatticeDomain<D> readLatticeDomain(const Dictionary& dict) {
     const Vec<D>&lo = lattice.lo, &hi = lattice.hi;
     for (int d = 0; d < D; ++d)
         if (!(hi[d] > lo[d])) domain.fail("max", fmt::format("must exceed min in every direction (direction {}: {:g} <= {:g})", d, hi[d], lo[d]));
-    // The domain's lattice is walked by the shape fillers and covered by the generator's
-    // neighbour search (16 bytes a lattice point).
+    // The domain's lattice is walked by the shape fillers, and a fluid region may fill it: at
+    // least a position and a velocity (16 bytes in 1D) a lattice point.
     double latticePoints = 1.0;
     for (int d = 0; d < D; ++d) {
         const double across = (hi[d] - lo[d]) / lattice.dx;
@@ -198,7 +198,7 @@ GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomai
 template <int D>
 class WallClearance {
 public:
-    WallClearance(const GeneratedWalls<D>& walls, const CellLinkedList<D>& wallCells, double dx)
+    WallClearance(const GeneratedWalls<D>& walls, const SparseCellList<D>& wallCells, double dx)
         : walls_(walls), wallCells_(wallCells), dx_(dx), clearance_(0.5 * dx * (1.0 - 1e-9)), oneLayerPatch_(walls.patchNames.size(), true) {
         for (std::size_t j = 0; j < walls.particles.layers.size(); ++j)
             if (walls.particles.layers[j] > 0) oneLayerPatch_[static_cast<std::size_t>(walls.patchOf[j])] = false;
@@ -230,7 +230,7 @@ public:
 
 private:
     const GeneratedWalls<D>& walls_;
-    const CellLinkedList<D>& wallCells_;
+    const SparseCellList<D>& wallCells_;
     double dx_, clearance_;
     std::vector<bool> oneLayerPatch_;
 };
@@ -393,7 +393,7 @@ std::vector<std::int64_t> serialIds(const GenerationShare* share, const std::vec
         for (std::size_t r = 0; r < rank; ++r) before += all[r * regions + k];
         for (std::size_t j = 0; j < static_cast<std::size_t>(regionSizes[k]); ++j)
             ids.push_back(static_cast<std::int64_t>(before) + static_cast<std::int64_t>(j));
-        for (std::size_t r = 0; regions > 0 && r < all.size() / regions; ++r) regionsBefore += all[r * regions + k];
+        for (std::size_t r = 0; r < all.size() / regions; ++r) regionsBefore += all[r * regions + k];
     }
     return ids;
 }
@@ -423,7 +423,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     const Dictionary* boundaries = dict.findSubDict("boundaries");
     WallLayoutFromModel<D> layoutFromModel(caseDirectory, dx, properties);
     const GeneratedWalls<D> walls = generateWalls(boundaries, lattice, layoutFromModel, shapeDomain, notes);
-    CellLinkedList<D> wallCells(lattice.lo, lattice.hi, dx);
+    SparseCellList<D> wallCells(lattice.lo, lattice.hi, dx);
     wallCells.build(walls.particles.positions);
     if (boundaries) requireDistinctPatches(*boundaries, walls.patchNames, walls.patchOf, walls.particles.positions, wallCells, dx);
     const GeneratedFluid<D> fluid =
