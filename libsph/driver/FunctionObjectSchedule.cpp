@@ -12,18 +12,21 @@ namespace sph {
 
 template <int D>
 FunctionObjectSchedule<D>::FunctionObjectSchedule(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime,
-                                                  double rho0, const FluidSystemView<D>& system) {
+                                                  double rho0, const FluidSystemView<D>& system, const Reductions& reductions)
+    : reductions_(reductions) {
     const Dictionary* functions = controlDict.findSubDict("functions");
     if (!functions) return;
     const auto registry = makeFunctionObjectRegistry<D>();
-    for (const std::string& name : functions->keywords()) {
-        const Dictionary& dict = functions->subDict(name);
-        const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system};
-        auto object = selectByType(registry, dict, dict, context);
-        const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
-        fmt::print("Selecting function object {} ({})\n", name, object->describe());
-        entries_.push_back({name, std::move(object), interval, startTime});
-    }
+    for (const std::string& name : functions->keywords())
+        reductions.together([&] {
+            const Dictionary& dict = functions->subDict(name);
+            const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system,
+                                                   reductions};
+            auto object = selectByType(registry, dict, dict, context);
+            const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
+            fmt::print("Selecting function object {} ({})\n", name, object->describe());
+            entries_.push_back({name, std::move(object), interval, startTime});
+        });
 }
 
 template <int D>
@@ -35,7 +38,7 @@ template <int D>
 void FunctionObjectSchedule<D>::execute(const FluidSystemView<D>& system, double t, bool force) {
     for (Entry& entry : entries_) {
         if (!force && !isDue(entry, t)) continue;
-        entry.object->execute(system, t);
+        reductions_.together([&] { entry.object->execute(system, t); });
         while (entry.nextTime <= t + 1e-6 * entry.interval && entry.interval > 0.0) entry.nextTime += entry.interval;
     }
 }
@@ -53,7 +56,7 @@ void FunctionObjectSchedule<D>::reportErrorAgainstCost(const std::filesystem::pa
                                error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate,
                                startTime, cost.endTime);
         }
-    if (figures.empty()) return;
+    if (figures.empty() || !reductions_.writesFiles()) return;
     fmt::print("Error against run time: {}; wall time {:.2f} s, {} fluid particles, {} steps\n", fmt::join(figures, "; "), cost.wallSeconds,
                cost.fluidParticles, cost.steps);
     const auto directory = caseDirectory / "postProcessing" / "summary" / timeName(startTime);

@@ -24,8 +24,10 @@ template <int D>
 class FunctionObjectSchedule {
 public:
     // Selects each entry of `functions` by its type; none when controlDict has no `functions`.
+    // In a decomposed run every rank selects them, on its share (`system`), and they combine
+    // over the ranks by `reductions`: each construction and execution is collective.
     FunctionObjectSchedule(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime, double rho0,
-                           const FluidSystemView<D>& system);
+                           const FluidSystemView<D>& system, const Reductions& reductions = Reductions::oneProcess());
 
     // Executes each object at the first step at or after each multiple of its interval, or
     // every object when `force` (the start, the end, a stop).
@@ -47,6 +49,7 @@ private:
     };
     static bool isDue(const Entry& entry, double t) { return t >= entry.nextTime - 1e-6 * entry.interval; }
     std::vector<Entry> entries_;
+    const Reductions& reductions_;
 };
 
 }  // namespace sph

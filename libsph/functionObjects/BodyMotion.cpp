@@ -10,7 +10,7 @@ namespace sph {
 template <int D>
 BodyMotion<D>::BodyMotion(const Dictionary& dict, const FunctionObjectContext<D>& context) : patch_(dict.get<std::string>("patch")), dict_(&dict) {
     if constexpr (D != 2) dict.fail("type", "bodyMotion reports 2D free bodies only");
-    out_ = TimeSeriesFile(context.outputDirectory, "body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
+    out_ = context.series("body.dat", "# t X Y angle Vx Vy omega Fx Fy torque");
 }
 
 template <int D>

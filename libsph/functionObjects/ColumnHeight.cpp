@@ -1,5 +1,6 @@
 #include "functionObjects/ColumnHeight.hpp"
 
+#include "functionObjects/FirstParticleSpacing.hpp"
 #include "functionObjects/KernelInterpolation.hpp"
 #include "physics/FluidSystemView.hpp"
 
@@ -13,18 +14,17 @@ namespace sph {
 
 template <int D>
 ColumnHeight<D>::ColumnHeight(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : points_(readSamplePoints(dict, "points", context.system, "gauge")),
+    : reductions_(context.reductions),
+      points_(readSamplePoints(dict, "points", context.system, "gauge")),
       radius_(dict.getPositiveOrDefault("radius", context.system.smoothingLength)) {
     const FluidSystemView<D>& system = context.system;
     const Vec<D> g = system.gravity.full;
     if (!(g.norm() > 0.0)) dict.fail("type", "columnHeight measures against gravity, and this case has none");
     up_ = -g.normalized();
-    const auto& m = system.fluid[fields::mass];
-    const auto& rho = system.fluid[fields::density];
-    halfSpacing_ = system.fluid.size() > 0 ? 0.5 * std::pow(m[0] / rho[0], 1.0 / D) : 0.0;
+    halfSpacing_ = 0.5 * firstParticleSpacing(system, reductions_).value_or(0.0);
     std::string header = "# time";
     for (std::size_t k = 0; k < points_.size(); ++k) header += fmt::format(" h({:g})", fmt::join(points_[k], " "));
-    out_ = TimeSeriesFile(context.outputDirectory, "height.dat", header);
+    out_ = context.series("height.dat", header);
     if (const Dictionary* reference = dict.findSubDict("reference")) {
         std::vector<std::string> quantities;
         for (std::size_t k = 0; k < points_.size(); ++k) quantities.push_back(fmt::format("height at gauge {}", k));
@@ -42,11 +42,12 @@ std::vector<double> ColumnHeight<D>::heights(const FluidSystemView<D>& system) c
     std::vector<double> result(points_.size(), 0.0);
     const auto& x = system.fluid.position;
     for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i)
-        for (std::size_t k = 0; k < points_.size(); ++k) {
+        for (std::size_t k = 0; k < points_.size() && system.ownsFluid(i); ++k) {
             const Vec<D> offset = x[i] - points_[k];
             const double height = offset.dot(up_);
             if ((offset - height * up_).squaredNorm() < radius_ * radius_) result[k] = std::max(result[k], height + halfSpacing_);
         }
+    reductions_.max(result);
     return result;
 }
 

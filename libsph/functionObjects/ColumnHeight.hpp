@@ -34,6 +34,7 @@ public:
     std::vector<double> heights(const FluidSystemView<D>& system) const;  // one per gauge (exposed for tests)
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     std::vector<Vec<D>> points_;
     Vec<D> up_;
     double radius_, halfSpacing_;

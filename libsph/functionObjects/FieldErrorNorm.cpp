@@ -5,11 +5,14 @@
 
 #include <fmt/format.h>
 
+#include <array>
+
 namespace sph {
 
 template <int D>
 FieldErrorNorm<D>::FieldErrorNorm(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : field_(dict.get<std::string>("field")),
+    : reductions_(context.reductions),
+      field_(dict.get<std::string>("field")),
       scale_(dict.getPositiveOrDefault("scale", 1.0)),
       rho0_(context.rho0),
       subtractMean_(dict.getOrDefault("subtractMean", false)) {
@@ -20,8 +23,7 @@ FieldErrorNorm<D>::FieldErrorNorm(const Dictionary& dict, const FunctionObjectCo
     if (field_ == "p" && !solution_->hasPressure())
         dict.fail("field", fmt::format("the {} solution has no pressure field; compare U", solutionType_));
     if (subtractMean_ && field_ != "p") dict.fail("subtractMean", "applies to the field p only");
-    out_ = TimeSeriesFile(context.outputDirectory, "error.dat",
-                          fmt::format("# time L1 L2 Linf of {} - {}_exact, divided by {:g}", field_, field_, scale_));
+    out_ = context.series("error.dat", fmt::format("# time L1 L2 Linf of {} - {}_exact, divided by {:g}", field_, field_, scale_));
 }
 
 template <int D>
@@ -35,19 +37,25 @@ void FieldErrorNorm<D>::accumulate(const FluidSystemView<D>& system, double t, E
     const std::size_t n = system.fluid.ownedCount();
     if (field_ == "U") {
         const auto& v = system.fluid[fields::velocity];
-        for (std::size_t i = 0; i < n; ++i) accumulator.add((v[i] - solution_->velocity(x[i], t)).norm());
-        return;
+        for (std::size_t i = 0; i < n; ++i)
+            if (system.ownsFluid(i)) accumulator.add((v[i] - solution_->velocity(x[i], t)).norm());
+    } else {
+        const auto& p = system.fluid[fields::pressure];
+        const FlowConstants<D> constants{rho0_, system.gravity.at(t)};
+        std::vector<double> difference(n);
+        std::array<ExactSum, 2> total;  // of the differences, and the particles
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!system.ownsFluid(i)) continue;
+            difference[i] = p[i] - solution_->pressure(x[i], t, constants);
+            total[0].add(difference[i]);
+            total[1].add(1.0);
+        }
+        reductions_.sum(total);
+        const double shift = subtractMean_ && total[1].value() > 0.0 ? total[0].value() / total[1].value() : 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (system.ownsFluid(i)) accumulator.add(difference[i] - shift);
     }
-    const auto& p = system.fluid[fields::pressure];
-    const FlowConstants<D> constants{rho0_, system.gravity.at(t)};
-    std::vector<double> exact(n);
-    double meanDifference = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        exact[i] = solution_->pressure(x[i], t, constants);
-        meanDifference += (p[i] - exact[i]) / static_cast<double>(n);
-    }
-    const double shift = subtractMean_ ? meanDifference : 0.0;
-    for (std::size_t i = 0; i < n; ++i) accumulator.add(p[i] - exact[i] - shift);
+    accumulator.combine(reductions_);
 }
 
 template <int D>

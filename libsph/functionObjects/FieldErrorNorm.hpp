@@ -33,7 +33,8 @@ public:
     ErrorNorms norms(const FluidSystemView<D>& system, double t) const;
 
 private:
-    // Adds each particle's error to `accumulator`.
+    const Reductions& reductions_;  // over the processes that share the particles
+    // Adds each particle's error to `accumulator`, every process's (collective).
     void accumulate(const FluidSystemView<D>& system, double t, ErrorAccumulator& accumulator) const;
 
     std::string field_, solutionType_;

@@ -19,6 +19,7 @@ public:
     void execute(const FluidSystemView<D>& system, double t) override;
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     TimeSeriesFile out_;
 };
 

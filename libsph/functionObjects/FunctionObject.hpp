@@ -9,6 +9,8 @@
 
 #include "core/Registry.hpp"
 #include "functionObjects/ErrorNorms.hpp"
+#include "functionObjects/Reductions.hpp"
+#include "functionObjects/TimeSeriesFile.hpp"
 #include "io/Dictionary.hpp"
 #include "physics/FluidSystemView.hpp"
 
@@ -25,6 +27,12 @@ struct FunctionObjectContext {
     std::filesystem::path outputDirectory;  // postProcessing/<name>/<startTime>
     double rho0;
     FluidSystemView<D> system;  // the domain, gravity and models, for checks before the first step
+    const Reductions& reductions = Reductions::oneProcess();
+
+    // The object's time series, or one that writes nothing where this process does not write.
+    TimeSeriesFile series(const std::string& file, const std::string& header) const {
+        return reductions.writesFiles() ? TimeSeriesFile(outputDirectory, file, header) : TimeSeriesFile();
+    }
 };
 
 template <int D>

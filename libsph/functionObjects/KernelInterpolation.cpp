@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace sph {
 
@@ -31,6 +32,30 @@ InterpolatedFluid<D> interpolateFluid(const FluidSystemView<D>& system, const Ve
         result.pressure *= inverse;
         result.density *= inverse;
         result.velocity *= inverse;
+    }
+    return result;
+}
+
+template <int D>
+std::vector<InterpolatedFluid<D>> interpolateFluidAt(const FluidSystemView<D>& system, const std::vector<Vec<D>>& points,
+                                                     const Reductions& reductions) {
+    // Per point: weight, pressure, density, velocity. The others offer -infinity, so that the
+    // largest is the answer as computed, to the bit and the sign of a zero.
+    constexpr std::size_t record = 3 + D;
+    std::vector<double> values(points.size() * record, -std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (!system.answersFor(points[k])) continue;
+        const InterpolatedFluid<D> sampled = interpolateFluid(system, points[k]);
+        double* at = &values[k * record];
+        at[0] = sampled.weight, at[1] = sampled.pressure, at[2] = sampled.density;
+        for (int d = 0; d < D; ++d) at[3 + d] = sampled.velocity[d];
+    }
+    reductions.max(values);
+    std::vector<InterpolatedFluid<D>> result(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const double* at = &values[k * record];
+        result[k].weight = at[0], result[k].pressure = at[1], result[k].density = at[2];
+        for (int d = 0; d < D; ++d) result[k].velocity[d] = at[3 + d];
     }
     return result;
 }
@@ -65,8 +90,11 @@ void checkInterpolatedField(const Dictionary& dict, const std::string& keyword, 
 }
 
 template InterpolatedFluid<1> interpolateFluid<1>(const FluidSystemView<1>&, const Vec<1>&);
+template std::vector<InterpolatedFluid<1>> interpolateFluidAt<1>(const FluidSystemView<1>&, const std::vector<Vec<1>>&, const Reductions&);
 template InterpolatedFluid<2> interpolateFluid<2>(const FluidSystemView<2>&, const Vec<2>&);
+template std::vector<InterpolatedFluid<2>> interpolateFluidAt<2>(const FluidSystemView<2>&, const std::vector<Vec<2>>&, const Reductions&);
 template InterpolatedFluid<3> interpolateFluid<3>(const FluidSystemView<3>&, const Vec<3>&);
+template std::vector<InterpolatedFluid<3>> interpolateFluidAt<3>(const FluidSystemView<3>&, const std::vector<Vec<3>>&, const Reductions&);
 template double fieldValue<1>(const InterpolatedFluid<1>&, const std::string&);
 template void checkInterpolatedField<1>(const Dictionary&, const std::string&, const std::string&);
 template std::vector<Vec<1>> readSamplePoints<1>(const Dictionary&, const std::string&, const FluidSystemView<1>&, const std::string&);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/Vector.hpp"
+#include "functionObjects/Reductions.hpp"
 #include "io/Dictionary.hpp"
 #include "physics/FluidSystemView.hpp"
 
@@ -22,6 +23,11 @@ struct InterpolatedFluid {
 
 template <int D>
 InterpolatedFluid<D> interpolateFluid(const FluidSystemView<D>& system, const Vec<D>& x);
+// Collective: the interpolations at every point, each from the process that answers for it
+// (FluidSystemView::answersFor), on every process.
+template <int D>
+std::vector<InterpolatedFluid<D>> interpolateFluidAt(const FluidSystemView<D>& system, const std::vector<Vec<D>>& points,
+                                                     const Reductions& reductions);
 
 // One field of an interpolated sample by name: p, rho, U (magnitude), Ux, Uy, Uz.
 template <int D>

@@ -17,13 +17,14 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
       end_(dict.getVector<D>("end")),
       points_(dict.get<int>("points")),
       rho0_(context.rho0),
-      directory_(context.outputDirectory) {
+      directory_(context.outputDirectory),
+      reductions_(context.reductions) {
     // Each point is a line of the written .csv: ten million is far past any plot.
     constexpr int maxPoints = 10'000'000;
     if (points_ < 2 || points_ > maxPoints)
         dict.fail("points", "must be from 2 to " + std::to_string(maxPoints) + ", found " + std::to_string(points_));
     if (const Dictionary* reference = dict.findSubDict("hydrostaticReference")) hydrostatic_.emplace(*reference);
-    std::filesystem::create_directories(directory_);
+    if (reductions_.writesFiles()) std::filesystem::create_directories(directory_);
     if (const Dictionary* reference = dict.findSubDict("reference")) {
         profileField_ = reference->get<std::string>("field");
         checkInterpolatedField<D>(*reference, "field", profileField_);
@@ -33,7 +34,7 @@ LineSample<D>::LineSample(const Dictionary& dict, const FunctionObjectContext<D>
             reference->fail("axis", fmt::format("expected one of x{}{} for a {}D case, found '{}'", D > 1 ? ", y" : "", D > 2 ? ", z" : "", D, axis));
         profile_.emplace(*reference, context.caseDirectory, std::vector<std::string>{profileField_ + " profile"}, ReferenceSeries::Along::Coordinate);
     }
-    if (hydrostatic_) errorOut_ = TimeSeriesFile(directory_, "error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
+    if (hydrostatic_) errorOut_ = context.series("error.dat", "# time L2(p - p_ref)/(rho0 g H) max|p - p_ref|/(rho0 g H)");
 }
 
 template <int D>
@@ -45,12 +46,11 @@ std::string LineSample<D>::describe() const {
 
 template <int D>
 std::vector<typename LineSample<D>::Sample> LineSample<D>::sample(const FluidSystemView<D>& system) const {
+    std::vector<Vec<D>> points;
+    for (int s = 0; s < points_; ++s) points.push_back(start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1)));
+    const std::vector<InterpolatedFluid<D>> sampled = interpolateFluidAt(system, points, reductions_);
     std::vector<Sample> samples;
-    for (int s = 0; s < points_; ++s) {
-        const Vec<D> x = start_ + (end_ - start_) * (static_cast<double>(s) / (points_ - 1));
-        const InterpolatedFluid<D> sampled = interpolateFluid(system, x);
-        samples.push_back({x, sampled.pressure, sampled.density, sampled.velocity});
-    }
+    for (std::size_t s = 0; s < points.size(); ++s) samples.push_back({points[s], sampled[s].pressure, sampled[s].density, sampled[s].velocity});
     return samples;
 }
 
@@ -78,9 +78,11 @@ void LineSample<D>::execute(const FluidSystemView<D>& system, double t) {
             profile_->compare(s.position[profileAxis_], {fieldValue(InterpolatedFluid<D>{s.pressure, s.density, s.velocity, 0.0}, profileField_)});
         time_ = t;
     }
-    const auto timeDirectory = directory_ / timeName(t);
-    std::filesystem::create_directories(timeDirectory);
-    writeTextAtomically(timeDirectory / "line.csv", csv);
+    if (reductions_.writesFiles()) {
+        const auto timeDirectory = directory_ / timeName(t);
+        std::filesystem::create_directories(timeDirectory);
+        writeTextAtomically(timeDirectory / "line.csv", csv);
+    }
     if (hydrostatic_) {
         const double scale = rho0_ * constants.gravity.norm() * hydrostatic_->freeSurfaceHeight();
         time_ = t;

@@ -52,6 +52,7 @@ private:
     std::optional<HydrostaticPressure<D>> hydrostatic_;
     double rho0_;
     std::filesystem::path directory_;
+    const Reductions& reductions_;
     TimeSeriesFile errorOut_;
     ErrorNorms last_;
     std::optional<ReferenceSeries> profile_;

@@ -12,7 +12,8 @@
 namespace sph {
 
 template <int D>
-PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<D>& context) : names_(dict.get<std::vector<std::string>>("patches")) {
+PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<D>& context)
+    : reductions_(context.reductions), names_(dict.get<std::vector<std::string>>("patches")) {
     if (names_.empty()) dict.fail("patches", "lists no patch");
     const auto& patches = context.system.patches;
     std::string header = "# time";
@@ -25,7 +26,7 @@ PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<
         patches_.push_back(k);
         for (int d = 0; d < D; ++d) header += fmt::format(" {}_F{}", name, "xyz"[d]);
     }
-    out_ = TimeSeriesFile(context.outputDirectory, "forces.dat", header);
+    out_ = context.series("forces.dat", header);
 }
 
 template <int D>
@@ -43,23 +44,30 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystemView<D>& system) con
     const WallPairFields<D> wall{walls[fields::mass].data(), walls[fields::pressure].data(), walls[fields::density].data(),
                                  system.viscous ? walls[fields::viscousVelocity].data() : nullptr};
     const double eta2 = viscousRegularisation(system.smoothingLength);
-    std::vector<Vec<D>> result;
+    // Each wall particle's load from its fluid neighbours, then their exact sum per patch.
+    std::vector<ExactSum> totals(patches_.size() * D);
     std::visit(
         [&](const auto& kernel, const auto& viscosity) {
-            for (const std::size_t k : patches_) {
-                const Patch<D>& patch = system.patches[k];
-                Vec<D> force = Vec<D>::Zero();
-                for (std::size_t w = patch.begin; w < patch.end; ++w)
+            for (std::size_t k = 0; k < patches_.size(); ++k) {
+                const Patch<D>& patch = system.patches[patches_[k]];
+                for (std::size_t w = patch.begin; w < patch.end; ++w) {
+                    if (!system.ownsWall(w)) continue;
+                    Vec<D> force = Vec<D>::Zero();
                     system.fluidCells.forEachNeighbour(
                         walls.position[w], system.supportRadius, [&](std::uint32_t i, const Vec<D>& fromFluid, double r2) {
                             const Vec<D> r = -fromFluid;  // x_i - x_w, as the fluid's loop has it
                             const double F = kernel.gradientFactor(std::sqrt(r2));
                             force -= m[i] * fluidWallAcceleration<true>(viscosity, r, r2, F, eta2, p[i] / (rho[i] * rho[i]), rho[i], v[i], wall, w);
                         });
-                result.push_back(force);
+                    for (int d = 0; d < D; ++d) totals[k * D + static_cast<std::size_t>(d)].add(force[d]);
+                }
             }
         },
         system.kernel, system.viscosity);
+    reductions_.sum(totals);
+    std::vector<Vec<D>> result(patches_.size());
+    for (std::size_t k = 0; k < patches_.size(); ++k)
+        for (int d = 0; d < D; ++d) result[k][d] = totals[k * D + static_cast<std::size_t>(d)].value();
     return result;
 }
 

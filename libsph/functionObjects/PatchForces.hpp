@@ -29,6 +29,7 @@ public:
     std::vector<Vec<D>> forces(const FluidSystemView<D>& system) const;  // one per patch (exposed for tests)
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     std::vector<std::string> names_;
     std::vector<std::size_t> patches_;  // indices into the system's patches
     TimeSeriesFile out_;

@@ -9,13 +9,15 @@ namespace sph {
 
 template <int D>
 Probes<D>::Probes(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : points_(readSamplePoints(dict, "points", context.system, "probe")), fields_(dict.get<std::vector<std::string>>("fields")) {
+    : points_(readSamplePoints(dict, "points", context.system, "probe")),
+      fields_(dict.get<std::vector<std::string>>("fields")),
+      reductions_(context.reductions) {
     if (fields_.empty()) dict.fail("fields", "lists no field");
     for (const std::string& field : fields_) {
         checkInterpolatedField<D>(dict, "fields", field);
         std::string header = "# time";
         for (std::size_t k = 0; k < points_.size(); ++k) header += fmt::format(" {}({:g})", field, fmt::join(points_[k], " "));
-        out_.emplace_back(context.outputDirectory, field + ".dat", header);
+        out_.push_back(context.series(field + ".dat", header));
     }
     if (const Dictionary* reference = dict.findSubDict("reference")) {
         if (fields_.size() != 1) dict.fail("fields", "a probes object with a reference compares one field; list one");
@@ -33,10 +35,9 @@ std::string Probes<D>::describe() const {
 template <int D>
 std::vector<std::vector<double>> Probes<D>::sample(const FluidSystemView<D>& system) const {
     std::vector<std::vector<double>> values(fields_.size(), std::vector<double>(points_.size()));
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-        const InterpolatedFluid<D> sampled = interpolateFluid(system, points_[k]);
-        for (std::size_t f = 0; f < fields_.size(); ++f) values[f][k] = fieldValue(sampled, fields_[f]);
-    }
+    const std::vector<InterpolatedFluid<D>> sampled = interpolateFluidAt(system, points_, reductions_);
+    for (std::size_t k = 0; k < points_.size(); ++k)
+        for (std::size_t f = 0; f < fields_.size(); ++f) values[f][k] = fieldValue(sampled[k], fields_[f]);
     return values;
 }
 

@@ -37,6 +37,7 @@ private:
     std::vector<std::string> fields_;
     std::vector<TimeSeriesFile> out_;  // one per field
     std::optional<ReferenceSeries> reference_;
+    const Reductions& reductions_;
 };
 
 }  // namespace sph

@@ -9,10 +9,10 @@ namespace sph {
 
 template <int D>
 SurgeFront<D>::SurgeFront(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : origin_(dict.getVector<D>("origin")), direction_(dict.getVector<D>("direction")) {
+    : reductions_(context.reductions), origin_(dict.getVector<D>("origin")), direction_(dict.getVector<D>("direction")) {
     if (!(direction_.norm() > 0.0)) dict.fail("direction", "must not be the zero vector");
     direction_.normalize();
-    out_ = TimeSeriesFile(context.outputDirectory, "surgeFront.dat", "# time front");
+    out_ = context.series("surgeFront.dat", "# time front");
     if (const Dictionary* reference = dict.findSubDict("reference"))
         reference_.emplace(*reference, context.caseDirectory, std::vector<std::string>{"front"});
 }
@@ -27,7 +27,9 @@ template <int D>
 void SurgeFront<D>::execute(const FluidSystemView<D>& system, double t) {
     double front = -std::numeric_limits<double>::infinity();
     const auto& x = system.fluid.position;
-    for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i) front = std::max(front, (x[i] - origin_).dot(direction_));
+    for (std::size_t i = 0; i < system.fluid.ownedCount(); ++i)
+        if (system.ownsFluid(i)) front = std::max(front, (x[i] - origin_).dot(direction_));
+    front = reductions_.max(front);
     out_.append(fmt::format("{:.9g} {:.9g}", t, front));
     if (reference_) reference_->compare(t, {front});
 }

@@ -28,6 +28,7 @@ public:
     std::vector<ReportedError> errors() const override;
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     Vec<D> origin_, direction_;
     TimeSeriesFile out_;
     std::optional<ReferenceSeries> reference_;

@@ -11,7 +11,7 @@ namespace sph {
 
 template <int D>
 WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectContext<D>& context)
-    : out_(context.outputDirectory, "penetrations.dat", "# time behindWall mostSoFar") {}
+    : reductions_(context.reductions), out_(context.series("penetrations.dat", "# time behindWall mostSoFar")) {}
 
 template <int D>
 std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
@@ -27,6 +27,7 @@ std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
     std::size_t behind = 0;
 #pragma omp parallel for schedule(static) reduction(+ : behind)
     for (std::size_t i = 0; i < n; ++i) {
+        if (!system.ownsFluid(i)) continue;
         double nearest = std::numeric_limits<double>::infinity();
         double side = 1.0;
         for (const CellLinkedList<D>* list : lists)
@@ -44,7 +45,7 @@ std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
 
 template <int D>
 void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
-    const std::size_t behind = count(system);
+    const auto behind = static_cast<std::size_t>(reductions_.sum(static_cast<double>(count(system))));
     most_ = std::max(most_, behind);
     out_.append(fmt::format("{:.9g} {} {}", t, behind, most_));
 }

@@ -20,10 +20,11 @@ public:
     std::string describe() const override { return "wallPenetrations: fluid particles behind a wall, every execution"; }
     void execute(const FluidSystemView<D>& system, double t) override;
 
-    // The number of fluid particles behind a wall in `system` now.
+    // The number of fluid particles this process owns behind a wall in `system` now.
     static std::size_t count(const FluidSystemView<D>& system);
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     TimeSeriesFile out_;
     std::size_t most_ = 0;
 };

@@ -43,6 +43,7 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace sph {
@@ -60,12 +61,22 @@ public:
     std::vector<double> averaged(double t, const std::vector<double>& values);
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     double extrapolatedPressure(const FluidSystemView<D>& system, std::size_t wall, double t) const;
+    struct WallCandidate {
+        double gap;               // from the sensor
+        Vec<D> position, normal;  // where the patch was generated
+        double id;
+    };
+    // Collective: the surface particle nearest to `point` over every process's `surface`.
+    WallCandidate nearestSurfaceParticle(const FluidSystemView<D>& system, const std::vector<std::size_t>& surface, const Vec<D>& point) const;
 
     std::vector<Vec<D>> points_;
     double size_, window_;
     std::string patchName_;
-    std::vector<std::vector<std::size_t>> members_;  // each sensor's wall particles
+    std::size_t patch_ = 0;                                                 // index into the system's patches
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> sensorsOf_;  // by wall particle id: the sensors it belongs to
+    std::vector<std::size_t> memberCount_;                                  // per sensor: its wall particles
     bool modelSetsPressure_ = false;
     std::deque<std::pair<double, std::vector<double>>> history_;  // the samples within the window
     TimeSeriesFile out_;

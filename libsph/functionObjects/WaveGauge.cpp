@@ -1,5 +1,6 @@
 #include "functionObjects/WaveGauge.hpp"
 
+#include "functionObjects/FirstParticleSpacing.hpp"
 #include "functionObjects/KernelInterpolation.hpp"
 #include "functionObjects/PatchByName.hpp"
 #include "physics/FluidSystemView.hpp"
@@ -29,7 +30,8 @@ double distanceToBoundary(const Vec<D>& point, const Vec<D>& up, const Vec<D>& l
 
 template <int D>
 WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& context)
-    : points_(readSamplePoints(dict, "points", context.system, "gauge")),
+    : reductions_(context.reductions),
+      points_(readSamplePoints(dict, "points", context.system, "gauge")),
       threshold_(dict.getOrDefault("threshold", 0.5)),
       patchName_(dict.getOrDefault<std::string>("patch", "")) {
     const FluidSystemView<D>& system = context.system;
@@ -43,13 +45,10 @@ WaveGauge<D>::WaveGauge(const Dictionary& dict, const FunctionObjectContext<D>& 
         lengths_.push_back(dict.getPositiveOrDefault("length", reach));
     }
     if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, system).motion.get();
-    const auto& m = system.fluid[fields::mass];
-    const auto& rho = system.fluid[fields::density];
-    const double spacing = system.fluid.size() > 0 ? std::pow(m[0] / rho[0], 1.0 / D) : system.smoothingLength;
-    step_ = 0.25 * spacing;
+    step_ = 0.25 * firstParticleSpacing(system, reductions_).value_or(system.smoothingLength);
     std::string header = "# time";
     for (const Vec<D>& point : points_) header += fmt::format(" eta({:g})", fmt::join(point, " "));
-    out_ = TimeSeriesFile(context.outputDirectory, "elevation.dat", header);
+    out_ = context.series("elevation.dat", header);
     if (const Dictionary* reference = dict.findSubDict("reference")) {
         std::vector<std::string> quantities;
         for (std::size_t k = 0; k < points_.size(); ++k) quantities.push_back(fmt::format("elevation at gauge {}", k));
@@ -74,7 +73,9 @@ std::vector<double> WaveGauge<D>::elevations(const FluidSystemView<D>& system, d
             up = motion_->normalAt(up_, t);
         }
         // Downwards from the top of the line to the first wet sample, then bisected.
-        const auto wet = [&](double s) { return interpolateFluid(system, Vec<D>(point + s * up)).weight >= threshold_; };
+        const auto wet = [&](double s) {
+            return interpolateFluidAt(system, std::vector<Vec<D>>{point + s * up}, reductions_)[0].weight >= threshold_;
+        };
         double dry = lengths_[k], s = dry;
         while (s > 0.0 && !wet(s)) {
             dry = s;

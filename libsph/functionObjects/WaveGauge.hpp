@@ -49,6 +49,7 @@ public:
     std::vector<double> elevations(const FluidSystemView<D>& system, double t) const;  // one per gauge (exposed for tests)
 
 private:
+    const Reductions& reductions_;  // over the processes that share the particles
     std::vector<Vec<D>> points_;
     std::vector<double> lengths_;  // of each gauge's line
     Vec<D> up_;

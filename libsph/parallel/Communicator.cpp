@@ -34,6 +34,10 @@ void Communicator::maxOverRanks(std::span<double> values) const {
     MPI_Allreduce(MPI_IN_PLACE, values.data(), mpiByteCount(values.size()), MPI_DOUBLE, MPI_MAX, ranks_);
 }
 
+void Communicator::sumOverRanks(std::span<std::int64_t> values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), mpiByteCount(values.size()), MPI_INT64_T, MPI_SUM, ranks_);
+}
+
 void Communicator::broadcastFromFirst(std::span<double> values) const {
     MPI_Bcast(values.data(), mpiByteCount(values.size()), MPI_DOUBLE, 0, ranks_);
 }

@@ -39,6 +39,8 @@ public:
     std::int64_t sumOverRanks(std::int64_t value) const;
     // Each entry its largest value over the ranks, in place: several decisions in one message.
     void maxOverRanks(std::span<double> values) const;
+    // Each entry its sum over the ranks, in place.
+    void sumOverRanks(std::span<std::int64_t> values) const;
     // Rank 0's values on every rank.
     void broadcastFromFirst(std::span<double> values) const;
     std::string broadcastFromFirst(std::string text) const;

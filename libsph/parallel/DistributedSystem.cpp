@@ -341,6 +341,15 @@ void DistributedSystem<D>::shareStateWithSundials() {
 }
 
 #define SPHKIT_INSTANTIATE(D) template class DistributedSystem<D>;
+template <int D>
+FluidSystemView<D> DistributedSystem<D>::view() const {
+    FluidSystemView<D> share = system_.view();
+    share.fluidOwned = fluidOwned_;
+    share.wallsOwned = wallsOwned_;
+    share.answersForPoint = [this](const Vec<D>& x) { return boxes_.ownerOf(x) == ranks_.rank(); };
+    return share;
+}
+
 #ifdef SPHKIT_HAS_2D
 SPHKIT_INSTANTIATE(2)
 #endif

@@ -86,6 +86,11 @@ public:
 
     const DomainBoxes<D>& boxes() const { return boxes_; }
 
+    // This rank's share as function objects read it: the particles it holds, which of them it
+    // owns, and the sample points it answers for (those in the cells it owns). Valid until the
+    // next redistribution.
+    FluidSystemView<D> view() const;
+
 private:
     // Boxes from the particles at the given places (each rank passes its own), fluid weighing
     // weightPerParticle, walls wallWeight_ times that.

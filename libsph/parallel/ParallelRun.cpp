@@ -3,6 +3,7 @@
 #include "core/FatalError.hpp"
 #include "driver/BlowUpCheck.hpp"
 #include "driver/FluidSetup.hpp"
+#include "driver/FunctionObjectSchedule.hpp"
 #include "driver/Progress.hpp"
 #include "driver/RestartState.hpp"
 #include "driver/RunControls.hpp"
@@ -15,7 +16,7 @@
 #include "io/TimeName.hpp"
 #include "parallel/CostBalance.hpp"
 #include "parallel/DistributedSystem.hpp"
-#include "parallel/GatheredFunctionObjects.hpp"
+#include "parallel/ReductionsOverRanks.hpp"
 #include "parallel/GatheredParticles.hpp"
 #include "parallel/ParticlePieces.hpp"
 #include "parallel/ShareOfCase.hpp"
@@ -90,7 +91,7 @@ struct StepAgreement {
 template <int D>
 StepAgreement agreeAfterStep(const Communicator& ranks, const CaseSetup<D>& setup, const DistributedSystem<D>& shared, bool blownUp,
                              const StopRequest& stopRequest, ControlDictWatcher& watcher, const RunControls& controls,
-                             const GatheredFunctionObjects<D>& functionObjects, double t) {
+                             const FunctionObjectSchedule<D>& functionObjects, double t) {
     const FluidSystem<D>& system = *setup.system;
     const double stable = setup.fixedDeltaT > 0.0
                               ? setup.fixedDeltaT
@@ -165,14 +166,14 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
 
 template <int D>
 void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
-              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, GatheredFunctionObjects<D>& functionObjects,
+              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, FunctionObjectSchedule<D>& functionObjects,
               bool writeCsv, double balanceThreshold) {
     FluidSystem<D>& system = *setup.system;
     TimeIntegrator<D>& integrator = *setup.integrator;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
     const auto executeFunctionObjects = [&](double t, bool force) {
         auto timer = system.timers.time(Stage::FunctionObjects);
-        functionObjects.execute(shared, system, t, force);
+        functionObjects.execute(shared.view(), t, force);
     };
     const auto fluidParticles = static_cast<std::size_t>(ranks.sumOverRanks(static_cast<std::int64_t>(shared.ownedFluidCount())));
 
@@ -299,7 +300,6 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;
-    std::optional<GatheredFunctionObjects<D>> functionObjects;
     bool writeCsv = false;
     if (mode == RunMode::TimeLoop) {
         controls = RunControls::read(controlDict);
@@ -309,17 +309,16 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
         const bool modifiable = controlDict.getOrDefault("runTimeModifiable", true);
         // Rank 0 alone reads a changed controlDict; the others take its values.
         watcher.emplace(caseDirectory / "system/controlDict", modifiable && ranks.rank() == 0);
-        functionObjects.emplace(ranks, caseDirectory, start, controlDict, setup.rho0);
-        // Rank 0 alone has read `functions`.
-        together(ranks, [&] {
-            if (ranks.rank() == 0) controlDict.checkUnused();
-        });
     }
     FluidSystem<D>& system = *setup.system;
     DistributedSystem<D> shared(ranks, system);
     const RunThreads runThreads(system.fluid.size() + system.walls.size(), D, threads);
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
-    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, *functionObjects, writeCsv, balanceThreshold);
+    // Every rank selects the function objects, on its share; they combine over the ranks.
+    const ReductionsOverRanks reductions(ranks);
+    FunctionObjectSchedule<D> functionObjects(controlDict, caseDirectory, setup.header.time, setup.rho0, shared.view(), reductions);
+    together(ranks, [&] { controlDict.checkUnused(); });
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, functionObjects, writeCsv, balanceThreshold);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 //
 // One decision per step, taken together (a maximum over the ranks of a few numbers): the next
 // step's size, whether a rank found a blown-up particle, a stop signal, whether a function object
-// is due (rank 0 executes them on the gathered state, GatheredFunctionObjects), the displacement
+// is due (every rank executes it on its share, combining over the ranks: ReductionsOverRanks;
+// rank 0 writes its files), the displacement
 // that calls for new halos before the next cell sort, and rank 0's reading of a changed
 // controlDict. Output: <time>/fluid.pvtu and walls.pvtu with one piece per rank
 // (fluid_<r>.vtu, ...), listed in the case's .pvd; -rates writes the same to
@@ -17,7 +18,7 @@
 // BoundaryModel::reach; a free body's loads summed in the serial order); continuity or summation
 // density; periodic directions; any kernel, viscosity and density diffusion; particle shifting.
 // Each rank reads and sets up a share of the start state (ShareOfCase): no rank holds the whole
-// of it (rank 0 does where the case has function objects: GatheredFunctionObjects). The boxes
+// of it, at the start or later. The boxes
 // are made again when the ranks' measured work drifts apart (CostBalance).
 #pragma once
 

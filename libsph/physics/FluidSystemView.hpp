@@ -11,6 +11,7 @@
 #include "physics/Patch.hpp"
 #include "viscosity/Viscosity.hpp"
 
+#include <functional>
 #include <span>
 
 namespace sph {
@@ -29,6 +30,16 @@ struct FluidSystemView {
     bool viscous;  // the case selected a viscosity (walls then carry viscousVelocity)
     Vec<D> domainMin, domainMax;
     Gravity<D> gravity;
+    // A decomposed run's share (libsph/parallel) holds copies of its neighbours' particles too:
+    // per particle held, 1 where this process owns it, and which sample points it answers for
+    // (exactly one process answers for a point, and holds every particle within a support of
+    // it). Empty in the serial run: every particle and point is its own.
+    std::span<const char> fluidOwned = {}, wallsOwned = {};
+    std::function<bool(const Vec<D>&)> answersForPoint = {};
+
+    bool ownsFluid(std::size_t i) const { return fluidOwned.empty() || fluidOwned[i] != 0; }
+    bool ownsWall(std::size_t j) const { return wallsOwned.empty() || wallsOwned[j] != 0; }
+    bool answersFor(const Vec<D>& x) const { return !answersForPoint || answersForPoint(x); }
 };
 
 }  // namespace sph

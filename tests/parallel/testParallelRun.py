@@ -135,9 +135,24 @@ class ParallelRun(unittest.TestCase):
         self.assert_equal_to_serial(self.case("taylorGreen2D", 0.08, 0.04), (1, 2, 3, 4), ("0.04", "0.08"))
 
     def test_the_2d_dam_break_as_shipped_on_dummy_particles(self):
-        # With its function object (the surge front against Martin & Moyce's, every 0.001 s), and
-        # new boxes every 100 steps (-balance 1: at any measured imbalance), walls migrating too.
+        # With its function object (the surge front against Martin & Moyce's, every 0.001 s) and
+        # one of every other kind but bodyMotion (test_a_free_body), each rank executing them on
+        # its share; and new boxes every 100 steps (-balance 1: at any measured imbalance), walls
+        # migrating too, so that a sensor's wall particles change ranks.
         case = self.case("damBreak2D", 0.02, 0.01, functions=True)
+        edit(os.path.join(case, "system", "controlDict"), r"^functions\s*\{", """functions
+{
+    probes { type probes; points ((0.02 0.02) (0.2 0.005) (0.399 0.01)); fields (p U Uy); executeInterval 0.002; }
+    line { type lineSample; start (0.01 0.001); end (0.01 0.11); points 20; hydrostaticReference { freeSurfaceHeight 0.1143; }
+           executeInterval 0.01; }
+    totals { type fieldTotals; }
+    pError { type errorNorm; field p; solution { type hydrostatic; freeSurfaceHeight 0.1143; } scale 1000; executeInterval 0.005; }
+    height { type columnHeight; points ((0.02 0) (0.05 0)); executeInterval 0.002; }
+    gauges { type waveGauge; points ((0.02 0.001) (0.1 0.001)); executeInterval 0.005; }
+    sensors { type wallPressure; patch tank; points ((0 0.01) (0 0.03) (0.20002 0)); timeWindow 0.004; executeInterval 0.001; }
+    extrapolated { type wallPressure; patch tank; points ((0 0.005)); size 0.005; source fluid; executeInterval 0.002; }
+    forces { type forces; patches (tank); }
+    penetrations { type wallPenetrations; }""", re.M)
         for log in self.assert_equal_to_serial(case, (2, 3, 4), ("0.01", "0.02"), options=("-balance", "1")):
             self.assertGreaterEqual(log.count("Repartitioned at step"), 3, log[-3000:])
         with open(os.path.join(case + ".np2", "postProcessing", "front", "0", "surgeFront.dat")) as f:
