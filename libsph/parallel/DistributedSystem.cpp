@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 
@@ -101,16 +102,39 @@ void DistributedSystem<D>::agreeOnSurfacesAlongCurves(const ParticleSet<D>& wall
 
 template <int D>
 void DistributedSystem<D>::partition(const std::vector<std::uint32_t>& fluid, const std::vector<std::uint32_t>& walls, double weightPerParticle) {
+    // The box the fluid's reach spans now (every rank's fluid, grown by the halo width).
+    std::vector<double> bounds(2 * D, std::numeric_limits<double>::lowest());  // -lower, upper
+    for (const std::uint32_t i : fluid)
+        for (int d = 0; d < D; ++d) {
+            const auto dd = static_cast<std::size_t>(d);
+            bounds[dd] = std::max(bounds[dd], -system_.fluid.position[i][d]);
+            bounds[D + dd] = std::max(bounds[D + dd], system_.fluid.position[i][d]);
+        }
+    ranks_.maxOverRanks(bounds);
+    for (int d = 0; d < D; ++d)
+        fluidReach_.lower[d] = -bounds[static_cast<std::size_t>(d)] - width_, fluidReach_.upper[d] = bounds[static_cast<std::size_t>(D + d)] + width_;
     std::vector<Vec<D>> points;
     std::vector<double> weights;
-    for (const auto& [set, places, weight] :
-         {std::tuple{&system_.fluid, &fluid, weightPerParticle}, std::tuple{&system_.walls, &walls, wallWeight_ * weightPerParticle}})
-        for (const std::uint32_t i : *places) points.push_back(set->position[i]), weights.push_back(weight);
+    for (const std::uint32_t i : fluid) points.push_back(system_.fluid.position[i]), weights.push_back(weightPerParticle);
+    for (const std::uint32_t i : walls)
+        if (weighs(system_.walls.position[i])) points.push_back(system_.walls.position[i]), weights.push_back(wallWeight_ * weightPerParticle);
     Vec<D> period = Vec<D>::Zero();
     for (int d = 0; d < D; ++d)
         if (system_.periodic()[static_cast<std::size_t>(d)]) period[d] = system_.domainMax()[d] - system_.domainMin()[d];
     boxes_ = partitionByRcb<D>(ranks_, points, weights, system_.domainMin(), system_.domainMax(), period);
     boxes_.alignToCells(system_.fluidCells());
+}
+
+template <int D>
+bool DistributedSystem<D>::weighs(const Vec<D>& wall) const {
+    return (wall.array() >= fluidReach_.lower.array()).all() && (wall.array() <= fluidReach_.upper.array()).all();
+}
+
+template <int D>
+double DistributedSystem<D>::ownedWeight() const {
+    std::size_t walls = 0;
+    for (std::size_t w = 0; w < system_.walls.size(); ++w) walls += wallsOwned_[w] != 0 && weighs(system_.walls.position[w]);
+    return static_cast<double>(ownedFluidCount()) + wallWeight_ * static_cast<double>(walls);
 }
 
 template <int D>

@@ -56,8 +56,9 @@ public:
     // boxes even out the time, not the count. Then every particle to its new owner, sorted by
     // cell: call where the serial run sorts.
     void repartition(double weightPerParticle);
-    // What this rank's owned particles weigh in the partition at 1 per fluid particle.
-    double ownedWeight() const { return static_cast<double>(ownedFluidCount()) + wallWeight_ * static_cast<double>(ownedWallCount()); }
+    // What this rank's owned particles weigh in the partition at 1 per fluid particle (the
+    // walls that no fluid reaches weigh nothing: weighs()).
+    double ownedWeight() const;
 
     // Collective. After FluidSystem::shiftParticles: the owners' shifted positions (and densities)
     // to their copies, which the shift computed from incomplete neighbourhoods.
@@ -93,8 +94,13 @@ public:
 
 private:
     // Boxes from the particles at the given places (each rank passes its own), fluid weighing
-    // weightPerParticle, walls wallWeight_ times that.
+    // weightPerParticle, walls wallWeight_ times that. Walls that no fluid reaches cost
+    // nothing, but they would stretch the box that the bisection cuts across, longest side first
+    // (a dam break's tank beyond the water): only the walls within the halo width of the fluid's
+    // bounding box take part; the others go to whichever box holds them.
     void partition(const std::vector<std::uint32_t>& fluid, const std::vector<std::uint32_t>& walls, double weightPerParticle);
+    // Whether a wall at x takes part in the partition: inside the fluid's reach at the last one.
+    bool weighs(const Vec<D>& wall) const;
     [[nodiscard]] bool redistributeParticles(bool sortByCell, bool walls);
     static std::size_t ownedCount(const std::vector<char>& owned) { return static_cast<std::size_t>(std::count(owned.begin(), owned.end(), 1)); }
     static ParticleSet<D> selected(const ParticleSet<D>& set, const std::vector<char>& owned);
@@ -119,6 +125,7 @@ private:
     double width_;
     double wallWeight_;
     DomainBoxes<D> boxes_;
+    RankBox<D> fluidReach_;                      // the fluid's bounding box at the last partition, grown by the halo width
     std::vector<char> fluidOwned_, wallsOwned_;  // per particle held: 1 if this rank owns it
     std::optional<HaloExchange<D>> fluidHalos_, wallHalos_;
     std::vector<Vec<D>> positionsAtRedistribution_, wallPositionsAtRedistribution_;

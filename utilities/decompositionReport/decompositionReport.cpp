@@ -64,7 +64,7 @@ void report(const sph::parallel::Communicator& ranks, const std::filesystem::pat
                                               double(memory)};
     std::vector<double> all(static_cast<std::size_t>(statistics * ranks.size()));
     MPI_Gather(mine.data(), statistics, MPI_DOUBLE, all.data(), statistics, MPI_DOUBLE, 0, ranks.handle());
-    const double imbalance = parallel::loadImbalance(ranks, mine[0] + wallWeight * mine[1]);
+    const double imbalance = parallel::loadImbalance(ranks, shared.ownedWeight());
     if (ranks.rank() != 0) return;
 
     fmt::print("decompositionReport: {}, {}D, {} rank{}, halo width {:.6g} m (support radius {:.6g}), wall weight {:g}\n", caseName(caseDirectory), D,
