@@ -27,14 +27,16 @@ namespace {
 constexpr const char* usage = R"(Usage: mpirun -np N decompositionReport [OPTIONS]
 
 Shares a case's start state among the N ranks as wcsph -parallel does (Zoltan's recursive
-coordinate bisection of fluid and wall particles into boxes of whole cells, halos as wide as
-the models read plus a skin of 0.2 kernel supports), evaluates the rates once and prints, per
-rank, the owned and halo particles, the ranks it exchanges with and the bytes and messages the
-evaluation's halo refreshes sent; then the imbalance, the halo share and the memory per rank.
+coordinate bisection of the fluid particles and the wall particles within the fluid's reach
+into boxes of whole cells, halos as wide as the models read plus a skin of 0.2 kernel
+supports), evaluates the rates once and prints, per rank, the owned and halo particles, the
+ranks it exchanges with and the bytes and messages the evaluation's halo refreshes sent; then
+the imbalance, the halo share and the memory per rank.
 
 Options:
   -case <dir>          case directory (default: the current directory)
-  -wallWeight <w>      a wall particle's weight against a fluid particle's 1 (default 0.1)
+  -wallWeight <w>      a wall particle's weight against a fluid particle's 1 (default 0.1;
+                       walls beyond the fluid's reach weigh nothing)
   -help                print this message
 )";
 
