@@ -364,7 +364,6 @@ void DistributedSystem<D>::shareStateWithSundials() {
     system_.stateOverRanks = &stateOverRanks_;
 }
 
-#define SPHKIT_INSTANTIATE(D) template class DistributedSystem<D>;
 template <int D>
 FluidSystemView<D> DistributedSystem<D>::view() const {
     FluidSystemView<D> share = system_.view();
@@ -374,6 +373,7 @@ FluidSystemView<D> DistributedSystem<D>::view() const {
     return share;
 }
 
+#define SPHKIT_INSTANTIATE(D) template class DistributedSystem<D>;
 #ifdef SPHKIT_HAS_2D
 SPHKIT_INSTANTIATE(2)
 #endif
