@@ -180,10 +180,13 @@ FluidShapeRegistry<D> makeFluidShapeRegistry() {
 template <int D>
 FluidRegionParticles<D> fillFluidRegion(const Dictionary& region, double dx, const GenerationDomain<D>& domain) {
     FluidRegionParticles<D> result;
-    if (const Dictionary* field = region.findSubDict("velocity"))
-        result.initialField = selectByType(makeAnalyticSolutionRegistry<D>(), *field, *field);
-    else if (region.found("velocity"))
-        result.velocity = region.getVector<D>("velocity");
+    // A vector, or an analytic solution's field: findSubDict would refuse the vector.
+    if (const Entry* velocity = region.findEntry("velocity")) {
+        if (velocity->isDictionary())
+            result.initialField = selectByType(makeAnalyticSolutionRegistry<D>(), velocity->dictionary(), velocity->dictionary());
+        else
+            result.velocity = region.getVector<D>("velocity");
+    }
     result.positions = selectByType(makeFluidShapeRegistry<D>(), region, region, dx, domain, result.notes);
     return result;
 }

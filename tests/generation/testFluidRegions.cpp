@@ -29,6 +29,18 @@ TEST(FluidRegions, BoxOfAWholeNumberOfSpacingsIsThePlainLattice) {
     EXPECT_TRUE(filled.notes.empty());
 }
 
+TEST(FluidRegions, VelocityIsAVectorOrAnAnalyticField) {
+    const GenerationDomain<2> domain{Vec<2>(0, 0), Vec<2>(1, 1), ""};
+    const FluidRegionParticles<2> uniform =
+        fillFluidRegion<2>(Dictionary::fromString("type box; min (0 0); max (0.4 0.2); velocity (3 -2);", "column"), 0.1, domain);
+    EXPECT_EQ(uniform.velocity, Vec<2>(3, -2));
+    EXPECT_FALSE(uniform.initialField);
+    const FluidRegionParticles<2> vortex = fillFluidRegion<2>(
+        Dictionary::fromString("type box; min (0 0); max (1 1); velocity { type taylorGreen; U 1; L 1; nu 0.01; }", "vortex"), 0.1, domain);
+    ASSERT_TRUE(vortex.initialField);
+    EXPECT_THROW(fillFluidRegion<2>(Dictionary::fromString("type box; min (0 0); max (1 1); velocity (3);", "column"), 0.1, domain), FatalError);
+}
+
 TEST(FluidRegions, BoxOfAnyExtentEndsHalfASpacingInsideIt) {
     // 0.47 x 0.2 at dx = 0.1: round(4.7) = 5 columns at 0.05, 0.15, 0.25, 0.35 and 0.47 - 0.05 = 0.42.
     const Dictionary region = Dictionary::fromString("type box; min (0 0); max (0.47 0.2);", "column");
