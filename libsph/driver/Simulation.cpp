@@ -114,8 +114,7 @@ void printRunReport(const FluidSystem<D>& system, const TimeIntegrator<D>& integ
     const double particleSteps = static_cast<double>(cost.steps) * static_cast<double>(system.fluid.size());
     fmt::print("\nEnd at t = {:g}: {} steps, {} fluid + {} wall particles\n", cost.endTime, cost.steps, system.fluid.size(), system.walls.size());
     fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
-    fmt::print("Integrator counters:\n");
-    for (const auto& [name, value] : integrator.counters()) fmt::print("    {:<32} {}\n", name, value);
+    fmt::print("{}", integrator.countersReport());
     fmt::print("Time per part:\n");
     double accounted = 0.0;
     const auto printPart = [&](std::string_view name, double seconds) {

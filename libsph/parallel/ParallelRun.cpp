@@ -289,6 +289,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     const double particleSteps = static_cast<double>(step - firstStep) * static_cast<double>(fluidParticles);
     fmt::print("\nEnd at t = {:g}: {} steps, {} fluid particles on {} ranks\n", t, step - firstStep, fluidParticles, ranks.size());
     fmt::print("Wall time {:.2f} s, {:.3g} particle-steps/s\n", wall, wall > 0.0 ? particleSteps / wall : 0.0);
+    fmt::print("{}", integrator.countersReport());
     printTimePerPart(ranks, system, shared, buildSeconds, agreementSeconds, wall);
     functionObjects.reportErrorAgainstCost(caseDirectory, setup.header.time, {wall, fluidParticles, step - firstStep, t});
 }

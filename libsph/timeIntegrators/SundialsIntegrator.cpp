@@ -15,10 +15,13 @@ double SundialsIntegrator<D>::takeStep(IntegrableSystem<D>& system, double t, do
     }
     if (restart || migrated) {
         N_Vector y = state_.wrap(system);
-        if (restart || !resize(system, t, y)) {
+        if (!restart && resize(system, t, y)) {
+            ++resizes_;
+        } else {
             if (memory_) {
                 addCounts(beforeRestarts_);
                 release();
+                ++restarts_;
             }
             create(system, t, y, nextStep_);
         }
@@ -49,6 +52,8 @@ std::vector<std::pair<std::string, long>> SundialsIntegrator<D>::counters() cons
     Counts counts = beforeRestarts_;
     if (memory_) addCounts(counts);
     result.emplace_back("rejected steps (error test)", counts.rejected);
+    result.emplace_back("restarts", restarts_);
+    result.emplace_back("resizes (crossed between ranks)", resizes_);
     if (!implicitSolve_) return result;
     result.emplace_back("nonlinear iterations", counts.nonlinearIterations);
     result.emplace_back("nonlinear convergence failures", counts.nonlinearFailures);

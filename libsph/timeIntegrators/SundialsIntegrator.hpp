@@ -61,6 +61,9 @@ private:
     bool migrated_ = false;
     double nextStep_ = 0.0;
     Counts beforeRestarts_;
+    // Created again after the first creation, and handed a vector of other length (several
+    // ranks: particles crossed between two cell sorts).
+    long restarts_ = 0, resizes_ = 0;
 };
 
 }  // namespace sph

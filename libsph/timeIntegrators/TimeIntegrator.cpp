@@ -44,6 +44,13 @@ std::vector<std::pair<std::string, long>> TimeIntegrator<D>::counters() const {
 }
 
 template <int D>
+std::string TimeIntegrator<D>::countersReport() const {
+    std::string report = "Integrator counters:\n";
+    for (const auto& [name, value] : counters()) report += fmt::format("    {:<32} {}\n", name, value);
+    return report;
+}
+
+template <int D>
 void TimeIntegrator<D>::checkCompatible(const IntegrableSystem<D>& system, const Dictionary& dict) const {
     if (advancesFreeBodies()) return;
     for (const std::string& patch : system.freeBodyPatches())

@@ -60,6 +60,8 @@ public:
 
     // Name and value of each counter, for the end-of-run report.
     virtual std::vector<std::pair<std::string, long>> counters() const;
+    // The counters as the run report prints them (the same on every rank of a parallel run).
+    std::string countersReport() const;
     long rateEvaluations() const { return evaluations_; }
 
 protected:
