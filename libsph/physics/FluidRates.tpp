@@ -9,7 +9,8 @@
 // adds gravity and the fluid-wall terms, and writes the rates in storage order. Summation order
 // depends on the thread count (rates agree to round-off, not bit for bit). In a step's last
 // evaluation with particle shifting, each particle's pair loop is followed by the shifting pass's
-// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair. With
+// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair; in 2D
+// they read the distances and gradient factors the pair loop stored. With
 // delta-SPH the pass reads the moment and density differences from its gradient sums.
 #include "physics/FluidPairTerms.hpp"
 #include "physics/ShiftingPairSums.hpp"
@@ -321,6 +322,11 @@ private:
             for (std::size_t q = count; q < padded; ++q) neighbours_[q] = static_cast<std::uint32_t>(k);  // lanes: listed is neighbours_
             [[maybe_unused]] const std::size_t stride = neighbours_.size();
             [[maybe_unused]] double* const toL = toNeighbour_.data();  // D components of acceleration, then the density rate
+            // 2D: each pair's distance, then its gradient factor, for the shifting sums (two stores
+            // a pair, where a branch on the case's shifting would be one in every pair). In lanes
+            // (3D) the two stores cost the forces 3-5 % in every case: the sums evaluate them.
+            if (lanes == 1 && pairGeometry_.size() < 2 * padded) pairGeometry_.resize(4 * padded);
+            [[maybe_unused]] double* const pairDistance = pairGeometry_.data();
             const PairParticle<D> particleK = pair.particle(k);
             double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateK = 0.0;
 #pragma omp simd reduction(+ : a0, a1, a2, densityRateK) if (simd : lanes > 1)
@@ -338,7 +344,12 @@ private:
                         vDotR += vkl[d] * r[d];
                     }
                 }
-                const double F = (lanes == 1 || q < count ? 1.0 : 0.0) * kernel.gradientFactor(std::sqrt(r2));
+                const double distance = std::sqrt(r2);
+                const double F = (lanes == 1 || q < count ? 1.0 : 0.0) * kernel.gradientFactor(distance);
+                if constexpr (lanes == 1) {
+                    pairDistance[q] = distance;
+                    pairDistance[padded + q] = F;
+                }
                 const double inverseRegularisedR2 = 1.0 / (r2 + eta2);
                 double alongR, alongV;
                 pair.acceleration(particleK, l, F, r2, inverseRegularisedR2, vDotR, alongR, alongV);
@@ -366,7 +377,9 @@ private:
                 }
             }
             if constexpr (lanes > 1) addWhatNeighboursReceived(count);
-            if (shifting_) addShiftingPairs<Wraps::value, !Terms::densityGradient>(cells_, kernel, *shifting_, k, xk, listed, count, shiftingSums_);
+            if (shifting_)
+                addShiftingPairs<Wraps::value, !Terms::densityGradient, lanes == 1>(cells_, kernel, *shifting_, k, xk, listed, count,
+                                                                                    {pairDistance, pairDistance + padded}, shiftingSums_);
             as[k * D] += a0;
             if constexpr (D > 1) as[k * D + 1] += a1;
             if constexpr (D > 2) as[k * D + 2] += a2;
@@ -498,7 +511,7 @@ private:
     // Each thread's own.
     std::size_t thread_ = 0, team_ = 1;
     std::vector<std::uint32_t> neighbours_;
-    std::vector<double> toNeighbour_, distance2_;
+    std::vector<double> toNeighbour_, distance2_, pairGeometry_;
     double* accelerations_ = nullptr;  // this thread's accumulator, D doubles per place
     double* densityRates_ = nullptr;
     double* gradientSums_ = nullptr;  // delta-SPH's, gradientSumCount doubles per place

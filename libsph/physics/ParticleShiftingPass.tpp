@@ -96,7 +96,7 @@ void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, std::vec
         std::array<double, D> xk;
         for (int d = 0; d < D; ++d) xk[d] = cells.sortedPosition(k)[d];
         const std::size_t count = cells.template listWithin<1, Wraps::value>(stencil, xk, in.radius * in.radius, k + 1, neighbours, unusedScratch);
-        addShiftingPairs<Wraps::value, true>(cells, kernel, in.scratch, k, xk, neighbours.data(), count, mine.data());
+        addShiftingPairs<Wraps::value, true, false>(cells, kernel, in.scratch, k, xk, neighbours.data(), count, {}, mine.data());
     }  // implicit barrier: every pair is in
 }
 
@@ -168,7 +168,7 @@ void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel) {
             const Vec<D> inward = std::abs(moment.determinant()) > 1e-3 ? Vec<D>(moment.inverse() * gradient) : gradient;
             if (const double length = inward.norm(); length > 1e-12) scratch.outward[i] = -inward / length;
         }
-        scratch.law[i] = sum;
+        scratch.law[i] = scratch.weight.isOne() ? gradient : sum;  // a unit weight's pairs were not summed
     }
 }
 

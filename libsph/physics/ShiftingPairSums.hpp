@@ -14,21 +14,30 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 namespace sph {
 
-// Flattened: called from two loops, GCC left Eigen's 3D products out of line, one call per
-// pair and term (the 3D benchmark's sums took twice the time).
-template <bool Wraps, bool WithMoment, int D, class Kernel>
-[[gnu::flatten]] void addShiftingPairs(const CellLinkedList<D>& cells, const Kernel& kernel, const ParticleShiftingScratch<D>& scratch, std::size_t k,
-                                       const std::array<double, std::size_t{D}>& xk, const std::uint32_t* listed, std::size_t count,
-                                       typename ParticleShiftingScratch<D>::Sums* sums) {
+// The 2D force loop hands over each listed pair's distance and kernel gradient factor, which it
+// evaluated already (Given: their latency was most of the sums' cost); the shifting pass and the
+// force loop in lanes (3D) evaluate them here. Flattened: called from two loops, GCC left Eigen's 3D products out of line, one
+// call per pair and term (the 3D benchmark's sums took twice the time).
+struct PairGeometry {
+    const double* distance;
+    const double* gradientFactor;
+};
+
+template <bool Wraps, bool WithMoment, bool Given, int D, class Kernel, class Weight>
+[[gnu::flatten]] void addShiftingPairsWeighted(const CellLinkedList<D>& cells, const Kernel& kernel, const ParticleShiftingScratch<D>& scratch,
+                                               std::size_t k, const std::array<double, std::size_t{D}>& xk, const std::uint32_t* listed,
+                                               std::size_t count, [[maybe_unused]] PairGeometry given,
+                                               typename ParticleShiftingScratch<D>::Sums* sums, [[maybe_unused]] Weight weight) {
     using Matrix = Eigen::Matrix<double, D, D>;
+    constexpr bool sumsLaw = !std::is_same_v<Weight, UnitShiftingWeight>;
     const double* const volume = scratch.volume.data();
     const double* const density = scratch.density.data();
     const double* const xs = cells.sortedPosition(0).data();
-    const TensileShiftingWeight weight = scratch.weight;
-    const double inverseWdx = scratch.inverseWdx;
+    [[maybe_unused]] const double inverseWdx = scratch.inverseWdx;
     const double volumeK = volume[k], densityK = density[k];
     Matrix momentK = Matrix::Zero();
     Vec<D> gradientK = Vec<D>::Zero(), lawK = Vec<D>::Zero(), differencesK = Vec<D>::Zero();
@@ -36,14 +45,16 @@ template <bool Wraps, bool WithMoment, int D, class Kernel>
         const std::size_t l = listed[q];
         Vec<D> r;
         for (int d = 0; d < D; ++d) r[d] = cells.template separation<Wraps>(xk[d] - xs[l * D + d], d);
-        const double distance = r.norm();
-        const Vec<D> Fr = kernel.gradientFactor(distance) * r;
-        const Vec<D> weightFr = weight(kernel.value(distance) * inverseWdx) * Fr;
+        const Vec<D> Fr = (Given ? given.gradientFactor[q] : kernel.gradientFactor(r.norm())) * r;
         gradientK += volume[l] * Fr;
-        lawK += volume[l] * weightFr;
         auto& atL = sums[l];
         atL.gradient -= volumeK * Fr;
-        atL.law -= volumeK * weightFr;
+        if constexpr (sumsLaw) {
+            const double distance = Given ? given.distance[q] : r.norm();
+            const Vec<D> weightFr = weight(kernel.value(distance) * inverseWdx) * Fr;
+            lawK += volume[l] * weightFr;
+            atL.law -= volumeK * weightFr;
+        }
         if constexpr (WithMoment) {
             const Vec<D> differenceFr = (density[l] - densityK) * Fr;
             momentK.noalias() -= (volume[l] * Fr) * r.transpose();
@@ -59,6 +70,16 @@ template <bool Wraps, bool WithMoment, int D, class Kernel>
         atK.moment += momentK;
         atK.densityDifferences += differencesK;
     }
+}
+
+// The same with the scratch's weight as its own type (a branch per particle).
+template <bool Wraps, bool WithMoment, bool Given, int D, class Kernel>
+void addShiftingPairs(const CellLinkedList<D>& cells, const Kernel& kernel, const ParticleShiftingScratch<D>& scratch, std::size_t k,
+                      const std::array<double, std::size_t{D}>& xk, const std::uint32_t* listed, std::size_t count, PairGeometry given,
+                      typename ParticleShiftingScratch<D>::Sums* sums) {
+    withShiftingWeight(scratch.weight, [&](auto weight) {
+        addShiftingPairsWeighted<Wraps, WithMoment, Given>(cells, kernel, scratch, k, xk, listed, count, given, sums, weight);
+    });
 }
 
 }  // namespace sph

@@ -5,11 +5,13 @@
 // of wall particles and one-layer walls both completing the sums, a one-layer wall never
 // approached, the force loop's pair sums taken only at the state they were taken at.
 #include "boundaryModels/RepulsiveWall.hpp"
+#include "particleShifting/TensileShiftingWeight.hpp"
 #include "physics/FluidSystem.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
+#include <type_traits>
 
 using namespace sph;
 
@@ -122,6 +124,28 @@ TEST(ShiftingSun2017, PairWeightTakesThePowerOfAnyExponent) {
         for (const double w : {0.0, 0.37, 1.0, 1.6})
             EXPECT_NEAR(law.pairWeight()(w), 1.0 + 0.2 * std::pow(w, n), 1e-15 * (1.0 + 0.2 * std::pow(w, n))) << "n " << n << ", w " << w;
     }
+}
+
+TEST(ShiftingSun2017, PairWeightsOwnTypesGiveTheGeneralFormToTheBit) {
+    // The pair sums take R = 0 as a unit weight (the law's sum is not taken) and n = 4 as a
+    // fourth power of its own: each must equal the general form exactly.
+    for (const double R : {0.0, 0.2})
+        for (int n = 0; n <= 7; ++n) {
+            const TensileShiftingWeight general{R, n};
+            for (const double w : {0.0, 0.37, 1.0, 1.6}) {
+                const double own = withShiftingWeight(general, [&](auto weight) {
+                    if constexpr (std::is_same_v<decltype(weight), UnitShiftingWeight>) {
+                        EXPECT_EQ(R, 0.0);
+                        return 1.0;
+                    } else {
+                        constexpr bool fourth = std::is_same_v<decltype(weight), FourthPowerShiftingWeight>;
+                        EXPECT_EQ(fourth, R != 0.0 && n == 4);
+                        return weight(w);
+                    }
+                });
+                EXPECT_EQ(own, general(w)) << "R " << R << ", n " << n << ", w " << w;
+            }
+        }
 }
 
 TEST(ParticleShifting, EvensOutARandomLattice) {
