@@ -326,7 +326,7 @@ private:
             // a pair, where a branch on the case's shifting would be one in every pair). In lanes
             // (3D) the two stores cost the forces 3-5 % in every case: the sums evaluate them.
             if (lanes == 1 && pairGeometry_.size() < 2 * padded) pairGeometry_.resize(4 * padded);
-            [[maybe_unused]] double* const pairDistance = pairGeometry_.data();
+            [[maybe_unused]] double* const geometry = pairGeometry_.data();
             const PairParticle<D> particleK = pair.particle(k);
             double a0 = 0.0, a1 = 0.0, a2 = 0.0, densityRateK = 0.0;
 #pragma omp simd reduction(+ : a0, a1, a2, densityRateK) if (simd : lanes > 1)
@@ -347,8 +347,8 @@ private:
                 const double distance = std::sqrt(r2);
                 const double F = (lanes == 1 || q < count ? 1.0 : 0.0) * kernel.gradientFactor(distance);
                 if constexpr (lanes == 1) {
-                    pairDistance[q] = distance;
-                    pairDistance[padded + q] = F;
+                    geometry[q] = distance;
+                    geometry[padded + q] = F;
                 }
                 const double inverseRegularisedR2 = 1.0 / (r2 + eta2);
                 double alongR, alongV;
@@ -379,7 +379,7 @@ private:
             if constexpr (lanes > 1) addWhatNeighboursReceived(count);
             if (shifting_)
                 addShiftingPairs<Wraps::value, !Terms::densityGradient, lanes == 1>(cells_, kernel, *shifting_, k, xk, listed, count,
-                                                                                    {pairDistance, pairDistance + padded}, shiftingSums_);
+                                                                                    {geometry, geometry + padded}, shiftingSums_);
             as[k * D] += a0;
             if constexpr (D > 1) as[k * D + 1] += a1;
             if constexpr (D > 2) as[k * D + 2] += a2;

@@ -20,8 +20,9 @@ namespace sph {
 
 // The 2D force loop hands over each listed pair's distance and kernel gradient factor, which it
 // evaluated already (Given: their latency was most of the sums' cost); the shifting pass and the
-// force loop in lanes (3D) evaluate them here. Flattened: called from two loops, GCC left Eigen's 3D products out of line, one
-// call per pair and term (the 3D benchmark's sums took twice the time).
+// force loop in lanes (3D) evaluate them here. Flattened: called from two loops, GCC left
+// Eigen's 3D products out of line, one call per pair and term (the 3D benchmark's sums took
+// twice the time).
 struct PairGeometry {
     const double* distance;
     const double* gradientFactor;
