@@ -64,34 +64,54 @@ std::string WaveGauge<D>::describe() const {
 
 template <int D>
 std::vector<double> WaveGauge<D>::elevations(const FluidSystemView<D>& system, double t) const {
-    std::vector<double> result;
-    result.reserve(points_.size());
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-        Vec<D> point = points_[k], up = up_;
-        if (motion_) {
-            point = motion_->at(points_[k], up_, t).position;
-            up = motion_->normalAt(up_, t);
+    const std::size_t gauges = points_.size();
+    std::vector<Vec<D>> origin(points_), up(gauges, up_);
+    if (motion_)
+        for (std::size_t k = 0; k < gauges; ++k) {
+            origin[k] = motion_->at(points_[k], up_, t).position;
+            up[k] = motion_->normalAt(up_, t);
         }
-        // Downwards from the top of the line to the first wet sample, then bisected.
-        const auto wet = [&](double s) {
-            return interpolateFluidAt(system, std::vector<Vec<D>>{point + s * up}, reductions_)[0].weight >= threshold_;
-        };
-        double dry = lengths_[k], s = dry;
-        while (s > 0.0 && !wet(s)) {
-            dry = s;
-            s = std::max(0.0, s - step_);
+    const auto wet = [&](const InterpolatedFluid<D>& sample) { return sample.weight >= threshold_; };
+    // The scan: a line's samples from its top downwards in steps, to the first wet one. Each
+    // process walks those it answers for to its first wet one, and the topmost over the
+    // processes is the line's: one collective for every gauge, and no sample below it taken.
+    const auto below = [&](double s) { return std::max(0.0, s - step_); };
+    std::vector<double> minusFirstWet(gauges, -std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < gauges; ++k)
+        for (double s = lengths_[k], n = 0.0;; s = below(s), ++n) {
+            const Vec<D> x = origin[k] + s * up[k];
+            if (system.answersFor(x) && wet(interpolateFluid(system, x))) {
+                minusFirstWet[k] = -n;
+                break;
+            }
+            if (s == 0.0) break;
         }
-        if (!wet(s)) {
-            result.push_back(0.0);
-            continue;
-        }
-        double wetAt = s;
-        while (dry - wetAt > 4e-3 * step_) {
-            const double middle = 0.5 * (wetAt + dry);
-            (wet(middle) ? wetAt : dry) = middle;
-        }
-        result.push_back(0.5 * (wetAt + dry));
+    reductions_.max(minusFirstWet);
+    // The crossings bisected between the first wet sample and the one above it, every gauge's
+    // middle in one collective per round.
+    std::vector<double> result(gauges, 0.0), dryAt(gauges), wetAt(gauges);  // 0 where a line is dry
+    std::vector<std::size_t> crossed;
+    for (std::size_t k = 0; k < gauges; ++k) {
+        if (std::isinf(minusFirstWet[k])) continue;
+        wetAt[k] = dryAt[k] = lengths_[k];
+        for (double n = -minusFirstWet[k]; n > 0.0; --n) dryAt[k] = wetAt[k], wetAt[k] = below(wetAt[k]);
+        crossed.push_back(k);
     }
+    std::vector<std::size_t> bisecting = crossed;
+    while (true) {
+        std::erase_if(bisecting, [&](std::size_t k) { return !(dryAt[k] - wetAt[k] > 4e-3 * step_); });
+        if (bisecting.empty()) break;
+        std::vector<double> middle(bisecting.size());
+        std::vector<Vec<D>> samples(bisecting.size());
+        for (std::size_t n = 0; n < bisecting.size(); ++n) {
+            const std::size_t k = bisecting[n];
+            middle[n] = 0.5 * (wetAt[k] + dryAt[k]);
+            samples[n] = origin[k] + middle[n] * up[k];
+        }
+        const std::vector<InterpolatedFluid<D>> sampled = interpolateFluidAt(system, samples, reductions_);
+        for (std::size_t n = 0; n < bisecting.size(); ++n) (wet(sampled[n]) ? wetAt : dryAt)[bisecting[n]] = middle[n];
+    }
+    for (const std::size_t k : crossed) result[k] = 0.5 * (wetAt[k] + dryAt[k]);
     return result;
 }
 

@@ -4,8 +4,9 @@
 // (about 1 inside the fluid, 1/2 on a flat surface) falls through `threshold` along the line
 // upwards (against gravity) from each gauge's point: the topmost crossing, so that a splashed
 // particle or a thin jet (phi below the threshold) does not read as the level. The line is
-// scanned downwards in steps of dx/4 from its top and the crossing bisected to dx/1000. In the
-// manner of DualSPHysics' swl gauge and OpenFOAM's interfaceHeight.
+// scanned downwards in steps of dx/4 from its top and the crossing bisected to dx/1000; in a
+// decomposed run every gauge together takes one collective for the scan and one per bisection
+// round. In the manner of DualSPHysics' swl gauge and OpenFOAM's interfaceHeight.
 // With `patch`, the gauges move with that patch's motion (a sloshing tank's wall gauges): each
 // point is a material point of the patch, the line turns with a rotating patch.
 // Writes postProcessing/<name>/<t0>/elevation.dat: time, then one column per gauge, the height

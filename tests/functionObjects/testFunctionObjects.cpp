@@ -334,6 +334,28 @@ TEST(WaveGauge, GaugesOnAMovingPatchFollowItAndWriteTheirSeries) {
     EXPECT_EQ(row.substr(0, 4), "0 0.");  // just below 1.0
 }
 
+// A serial run's reductions that count their collectives.
+struct CountedReductions : Reductions {
+    mutable int collectives = 0;
+    void max(std::span<double>) const override { ++collectives; }
+};
+
+TEST(WaveGauge, TakesEveryGaugesSamplesInOneCollectivePerStage) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock();
+    const CountedReductions counted;
+    const FunctionObjectContext<2> context = contextFor(dir, *system);
+    const FunctionObjectContext<2> countedContext{context.caseDirectory, context.outputDirectory, context.rho0, context.system, counted};
+    WaveGauge<2> gauges(Dictionary::fromString("type waveGauge; points ((0.1 0) (0.3 0.1) (0.5 0.2) (0.7 0.3) (0.9 0.4) (1.05 0));", "gauges"),
+                        countedContext);
+    counted.collectives = 0;
+    const std::vector<double> eta = gauges.elevations(system->view(), 0.0);
+    // The scan, then the bisection from dx/4 to dx/1000 in 8 rounds, however many gauges.
+    EXPECT_EQ(counted.collectives, 1 + 8);
+    for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(eta[k], 1.0 - 0.1 * static_cast<double>(k), 0.05 * dx);
+    EXPECT_EQ(eta[5], 0.0);
+}
+
 TEST(WaveGauge, BadThresholdPatchOrLineAreErrorsBeforeTheFirstStep) {
     const auto dir = freshDirectory();
     auto system = makeBlock(std::make_unique<Translation<2>>(Dictionary::fromString("velocity (0.3 0);", "motion")));
