@@ -19,6 +19,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <numeric>
 #include <span>
 #include <string_view>
 
@@ -31,6 +32,16 @@ vtkSmartPointer<Array> fieldArray(const std::string& name, std::span<const doubl
     auto array = vtkSmartPointer<Array>::New();
     array->SetName(name.c_str());
     for (double v : values) array->InsertNextValue(v);
+    return array;
+}
+
+// The written particles' values of one point field: `values` at each of `places`.
+template <class Array, class Value>
+vtkSmartPointer<Array> pointArray(const std::string& name, const std::vector<Value>& values, std::span<const std::uint32_t> places) {
+    auto array = vtkSmartPointer<Array>::New();
+    array->SetName(name.c_str());
+    array->SetNumberOfValues(static_cast<vtkIdType>(places.size()));
+    for (std::size_t i = 0; i < places.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), values[places[i]]);
     return array;
 }
 
@@ -95,15 +106,22 @@ StateHeader headerOf(vtkUnstructuredGrid* grid, const std::filesystem::path& fil
 }  // namespace
 
 template <int D>
-void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header) {
-    const std::size_t n = particles.ownedCount();  // halo copies belong to other ranks' files
+void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header, WrittenPlaces places) {
+    std::vector<std::uint32_t> owned;
+    if (!places) {
+        owned.resize(particles.ownedCount());
+        std::iota(owned.begin(), owned.end(), 0u);
+        places = owned;
+    }
+    const std::span<const std::uint32_t> written = *places;
+    const std::size_t n = written.size();
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(n));
     for (std::size_t i = 0; i < n; ++i) {
         double p[3] = {0.0, 0.0, 0.0};
-        for (int d = 0; d < D; ++d) p[d] = particles.position[i][d];
+        for (int d = 0; d < D; ++d) p[d] = particles.position[written[i]][d];
         points->SetPoint(static_cast<vtkIdType>(i), p);
     }
     grid->SetPoints(points);
@@ -114,14 +132,9 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
     }
     grid->SetCells(VTK_VERTEX, cells);
 
-    auto ids = vtkSmartPointer<vtkTypeInt64Array>::New();
-    ids->SetName("id");
-    for (std::size_t i = 0; i < n; ++i) ids->InsertNextValue(particles.globalId[i]);
-    grid->GetPointData()->AddArray(ids);
-    for (const auto& [name, field] : particles.scalars()) {
-        if (!field.written) continue;
-        grid->GetPointData()->AddArray(fieldArray<vtkDoubleArray>(name, std::span(field.values).first(n)));
-    }
+    grid->GetPointData()->AddArray(pointArray<vtkTypeInt64Array>("id", particles.globalId, written));
+    for (const auto& [name, field] : particles.scalars())
+        if (field.written) grid->GetPointData()->AddArray(pointArray<vtkDoubleArray>(name, field.values, written));
     for (const auto& [name, field] : particles.vectors()) {
         if (!field.written) continue;
         auto array = vtkSmartPointer<vtkDoubleArray>::New();
@@ -130,18 +143,13 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
         array->SetNumberOfTuples(static_cast<vtkIdType>(n));
         for (std::size_t i = 0; i < n; ++i) {
             double t[3] = {0.0, 0.0, 0.0};
-            for (int d = 0; d < D; ++d) t[d] = field.values[i][d];
+            for (int d = 0; d < D; ++d) t[d] = field.values[written[i]][d];
             array->SetTuple(static_cast<vtkIdType>(i), t);
         }
         grid->GetPointData()->AddArray(array);
     }
-    for (const auto& [name, field] : particles.integers()) {
-        if (!field.written) continue;
-        auto array = vtkSmartPointer<vtkIntArray>::New();
-        array->SetName(name.c_str());
-        for (std::size_t i = 0; i < n; ++i) array->InsertNextValue(field.values[i]);
-        grid->GetPointData()->AddArray(array);
-    }
+    for (const auto& [name, field] : particles.integers())
+        if (field.written) grid->GetPointData()->AddArray(pointArray<vtkIntArray>(name, field.values, written));
 
     vtkFieldData* data = grid->GetFieldData();
     const auto one = [](double value) { return std::vector<double>{value}; };
@@ -223,8 +231,8 @@ ParticleSet<D> readParticleFile(const std::filesystem::path& file, const std::st
 
 StateHeader readParticleFileHeader(const std::filesystem::path& file) { return headerOf(readGrid(file), file); }
 
-#define SPHKIT_INSTANTIATE(D)                                                                                    \
-    template void writeParticleFile<D>(const std::filesystem::path&, const ParticleSet<D>&, const StateHeader&); \
+#define SPHKIT_INSTANTIATE(D)                                                                                                   \
+    template void writeParticleFile<D>(const std::filesystem::path&, const ParticleSet<D>&, const StateHeader&, WrittenPlaces); \
     template ParticleSet<D> readParticleFile<D>(const std::filesystem::path&, const std::string&, StateHeader&);
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)

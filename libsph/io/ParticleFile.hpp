@@ -12,8 +12,11 @@
 
 #include "core/ParticleSet.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,9 +34,14 @@ struct StateHeader {
     std::map<std::string, std::vector<double>> restart;
 };
 
-// Writes the owned particles (halo copies are in other ranks' files).
+// The places of the particles a file holds, in order; none: the set's owned particles (halo
+// copies are in other ranks' files). A decomposed run names its owned ones among its copies
+// rather than copying them into a set of their own.
+using WrittenPlaces = std::optional<std::span<const std::uint32_t>>;
+
 template <int D>
-void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header);
+void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& particles, const StateHeader& header,
+                       WrittenPlaces places = std::nullopt);
 
 // Reads a particle file; FatalError naming the file for a missing, unreadable or incomplete one.
 template <int D>

@@ -49,8 +49,8 @@ std::vector<std::uint32_t> serialOrder(const ParticleSet<D>& set) {
 
 template <int D>
 void writeParticlePiece(const std::filesystem::path& directory, const std::string& name, int rank, int count, const ParticleSet<D>& particles,
-                        const StateHeader& header, const std::function<void(const std::function<void()>&)>& together) {
-    together([&] { writeParticleFile(directory / fmt::format("{}_{}.vtu", name, rank), particles, header); });
+                        const StateHeader& header, const std::function<void(const std::function<void()>&)>& together, WrittenPlaces places) {
+    together([&] { writeParticleFile(directory / fmt::format("{}_{}.vtu", name, rank), particles, header, places); });
     together([&] {
         if (rank != 0) return;
         std::vector<std::string> pieces;
@@ -84,7 +84,7 @@ ParticleSet<D> readParticleState(const std::filesystem::path& file, const std::s
     template ParticleSet<D> readParticleState<D>(const std::filesystem::path&, const std::string&, StateHeader&);                              \
     template void appendParticles<D>(ParticleSet<D>&, ParticleSet<D>&, const std::filesystem::path&);                                          \
     template void writeParticlePiece<D>(const std::filesystem::path&, const std::string&, int, int, const ParticleSet<D>&, const StateHeader&, \
-                                        const std::function<void(const std::function<void()>&)>&);                                             \
+                                        const std::function<void(const std::function<void()>&)>&, WrittenPlaces);                              \
     template std::vector<std::uint32_t> serialOrder<D>(const ParticleSet<D>&);
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)

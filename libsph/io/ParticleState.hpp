@@ -38,12 +38,14 @@ std::filesystem::path stateFile(const std::filesystem::path& directory, const st
 // The header of a .vtu, or of a .pvtu's first piece.
 StateHeader readStateHeader(const std::filesystem::path& file);
 
-// Writer `rank` of `count` writes its particles as <directory>/<name>_<rank>.vtu, then writer 0
-// the index <directory>/<name>.pvtu naming every piece. `together` runs each of the two stages
-// on every writer and stops all where one fails, so that the index follows the last piece.
+// Writer `rank` of `count` writes its particles (those at `places`, as writeParticleFile) as
+// <directory>/<name>_<rank>.vtu, then writer 0 the index <directory>/<name>.pvtu naming every
+// piece. `together` runs each of the two stages on every writer and stops all where one fails,
+// so that the index follows the last piece.
 template <int D>
 void writeParticlePiece(const std::filesystem::path& directory, const std::string& name, int rank, int count, const ParticleSet<D>& particles,
-                        const StateHeader& header, const std::function<void(const std::function<void()>&)>& together);
+                        const StateHeader& header, const std::function<void(const std::function<void()>&)>& together,
+                        WrittenPlaces places = std::nullopt);
 
 // A .vtu or a .pvtu (FatalError naming the file for a missing or inconsistent piece).
 template <int D>

@@ -235,6 +235,16 @@ std::vector<int> DistributedSystem<D>::neighbourRanks() const {
 }
 
 template <int D>
+std::vector<std::uint32_t> DistributedSystem<D>::ownedFluidPlaces() const {
+    return ownedPlaces(fluidOwned_);
+}
+
+template <int D>
+std::vector<std::uint32_t> DistributedSystem<D>::ownedWallPlaces() const {
+    return ownedPlaces(wallsOwned_);
+}
+
+template <int D>
 ParticleSet<D> DistributedSystem<D>::selected(const ParticleSet<D>& set, const std::vector<char>& owned) {
     ParticleSet<D> part = set;
     part.keep(ownedPlaces(owned));

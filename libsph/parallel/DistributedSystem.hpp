@@ -69,9 +69,14 @@ public:
     double largestDisplacement() const;
     double skin() const { return skin_; }
 
-    // This rank's owned particles, in the serial order (for output).
+    // This rank's owned particles, in the serial order (for output): a set of their own, or
+    // their places among the particles the rank holds (no copy of every array).
     ParticleSet<D> ownedFluid() const { return selected(system_.fluid, fluidOwned_); }
     ParticleSet<D> ownedWalls() const { return selected(system_.walls, wallsOwned_); }
+    const ParticleSet<D>& heldFluid() const { return system_.fluid; }
+    const ParticleSet<D>& heldWalls() const { return system_.walls; }
+    std::vector<std::uint32_t> ownedFluidPlaces() const;
+    std::vector<std::uint32_t> ownedWallPlaces() const;
     std::size_t ownedFluidCount() const { return ownedCount(fluidOwned_); }
     std::size_t ownedWallCount() const { return ownedCount(wallsOwned_); }
 

@@ -56,9 +56,9 @@ void writeDirectoryTogether(const Communicator& ranks, const std::filesystem::pa
 template <int D>
 void writeState(const Communicator& ranks, const std::filesystem::path& directory, const DistributedSystem<D>& shared, StateHeader header,
                 const std::vector<std::string>& patchNames) {
-    writeParticlePieces(ranks, directory, "fluid", shared.ownedFluid(), header);
+    writeParticlePieces(ranks, directory, "fluid", shared.heldFluid(), header, shared.ownedFluidPlaces());
     header.patchNames = patchNames;
-    writeParticlePieces(ranks, directory, "walls", shared.ownedWalls(), header);
+    writeParticlePieces(ranks, directory, "walls", shared.heldWalls(), header, shared.ownedWallPlaces());
 }
 
 // Collective. fluid.csv and walls.csv as the serial run writes them: every rank's owned particles

@@ -13,9 +13,9 @@ namespace sph::parallel {
 
 template <int D>
 void writeParticlePieces(const Communicator& ranks, const std::filesystem::path& directory, const std::string& name, const ParticleSet<D>& particles,
-                         const StateHeader& header) {
-    writeParticlePiece(directory, name, ranks.rank(), ranks.size(), particles, header,
-                       [&](const std::function<void()>& stage) { together(ranks, stage); });
+                         const StateHeader& header, WrittenPlaces places) {
+    writeParticlePiece(
+        directory, name, ranks.rank(), ranks.size(), particles, header, [&](const std::function<void()>& stage) { together(ranks, stage); }, places);
 }
 
 template <int D>
@@ -64,7 +64,7 @@ ParticleSet<D> readParticlePieces(const Communicator& ranks, const std::filesyst
 
 #define SPHKIT_INSTANTIATE(D)                                                                                                       \
     template void writeParticlePieces(const Communicator&, const std::filesystem::path&, const std::string&, const ParticleSet<D>&, \
-                                      const StateHeader&);                                                                          \
+                                      const StateHeader&, WrittenPlaces);                                                           \
     template ParticleSet<D> readParticlePieces(const Communicator&, const std::filesystem::path&, const std::string&, StateHeader&);
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)

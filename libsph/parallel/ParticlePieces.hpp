@@ -18,7 +18,7 @@ namespace sph::parallel {
 // Collective. A failure on any rank (a full disk) stops every rank with its message.
 template <int D>
 void writeParticlePieces(const Communicator& ranks, const std::filesystem::path& directory, const std::string& name, const ParticleSet<D>& particles,
-                         const StateHeader& header);
+                         const StateHeader& header, WrittenPlaces places = std::nullopt);
 
 // Collective. `index` is the .pvtu; FatalError on every rank for a missing or unreadable piece,
 // or pieces that disagree on the time, the step or the fields. Each particle carries its place

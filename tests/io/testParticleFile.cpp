@@ -49,6 +49,43 @@ TEST(ParticleFile, RoundTripIsBitExact) {
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
 }
 
+TEST(ParticleFile, WritesTheParticlesAtTheGivenPlacesInTheirOrder) {
+    // A decomposed run's owned particles among its halo copies: places 3 and 1 of five.
+    const auto dir = sph::test::freshDirectory();
+    sph::ParticleSet<3> set("fluid");
+    set.resize(5);
+    auto& rho = set.add(sph::fields::density, 0.0);
+    auto& v = set.add(sph::fields::velocity, sph::Vec<3>::Zero());
+    auto& patch = set.add(sph::fields::patch, 0);
+    for (std::size_t i = 0; i < 5; ++i) {
+        set.position[i] = sph::Vec<3>(0.1 * i, 1.0 / (1.0 + i), -1.0 * i);
+        set.globalId[i] = static_cast<std::int64_t>(20 + i);
+        rho[i] = 1000.0 + i;
+        v[i] = sph::Vec<3>(i, 2.0 * i, 3.0 * i);
+        patch[i] = static_cast<int>(7 * i);
+    }
+    sph::StateHeader header;
+    header.dimension = 3;
+    header.domainMin = {-10, -10, -10};
+    header.domainMax = {10, 10, 10};
+    const std::vector<std::uint32_t> places{3, 1};
+    sph::writeParticleFile(dir / "piece.vtu", set, header, places);
+    sph::StateHeader read;
+    const auto back = sph::readParticleFile<3>(dir / "piece.vtu", "fluid", read);
+    ASSERT_EQ(back.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::size_t i = places[k];
+        EXPECT_EQ(back.position[k], set.position[i]);
+        EXPECT_EQ(back.globalId[k], set.globalId[i]);
+        EXPECT_EQ(back[sph::fields::density][k], rho[i]);
+        EXPECT_EQ(back[sph::fields::velocity][k], v[i]);
+        EXPECT_EQ(back[sph::fields::patch][k], patch[i]);
+    }
+    // A rank that owns none of the particles it holds writes an empty piece.
+    sph::writeParticleFile(dir / "empty.vtu", set, header, std::span<const std::uint32_t>());
+    EXPECT_EQ(sph::readParticleFile<3>(dir / "empty.vtu", "fluid", read).size(), 0u);
+}
+
 TEST(ParticleFile, MissingAndCorruptFilesAreClearErrors) {
     const auto dir = sph::test::freshDirectory();
     sph::StateHeader header;
