@@ -3,6 +3,7 @@
 #include "driver/ModelCatalogue.hpp"
 #include "driver/Simulation.hpp"
 #include "core/ExitOnError.hpp"
+#include "driver/FreedMemory.hpp"
 #include "driver/Threads.hpp"
 
 #include <fmt/format.h>
@@ -103,6 +104,7 @@ int runInParallel(const std::string& caseDirectory, sph::RunMode mode, bool over
 
 int main(int argc, char** argv) {
     sph::boundSpinWaiting(argv);
+    sph::keepFreedMemoryForReuse();
     std::string caseDirectory = ".";
     sph::RunMode mode = sph::RunMode::TimeLoop;
     bool overwrite = false;
