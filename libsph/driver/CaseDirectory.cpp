@@ -76,7 +76,7 @@ TimeDirectory selectStartTime(const std::filesystem::path& caseDirectory, const 
         for (const TimeDirectory& t : times)
             if (std::abs(t.time - startTime) <= 1e-9 * std::max(1.0, std::abs(startTime))) return t;
         std::string valid;
-        for (const TimeDirectory& t : times) valid += " " + timeName(t.time);
+        for (const TimeDirectory& t : times) (valid += ' ') += timeName(t.time);
         controlDict.fail("startTime", "no time directory " + timeName(startTime) + " with a fluid.vtu or fluid.pvtu; written times are:" + valid);
     }
     controlDict.fail("startFrom", "expected latestTime or startTime, found '" + startFrom + "'");

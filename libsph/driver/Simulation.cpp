@@ -166,7 +166,7 @@ TimeDirectory prepareStartTime(const std::filesystem::path& caseDirectory, const
     if (const std::vector<TimeDirectory> later = timesAfter(caseDirectory, start.time); mode == RunMode::TimeLoop && !later.empty()) {
         if (!overwriteLaterTimes) {
             std::string names;
-            for (const TimeDirectory& t : later) names += " " + t.path.filename().string();
+            for (const TimeDirectory& t : later) (names += ' ') += t.path.filename().string();
             controlDict.fail("startFrom", fmt::format("the run starts at t = {:g}, but the case has later times (written by an earlier run):{}; "
                                                       "the run would overwrite them. Start from latestTime, remove them, or run wcsph "
                                                       "-overwrite to have them removed",

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <limits>
 #include <string>
 
@@ -218,7 +220,7 @@ TEST(BadInput, DuplicateIdsCoincidentParticlesAndZeroNormals) {
     auto fluid = original;
     fluid.globalId[5] = fluid.globalId[2];
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
-    expectContains(failureOf(dir, false), "'" + (dir / "0/fluid.vtu").string() + "': particles 2 and 5 (in file order) have the same id 2");
+    expectContains(failureOf(dir, false), fmt::format("'{}': particles 2 and 5 (in file order) have the same id 2", (dir / "0/fluid.vtu").string()));
     fluid = original;
     fluid.position[9] = fluid.position[4];
     sph::writeParticleFile(dir / "0/fluid.vtu", fluid, header);
