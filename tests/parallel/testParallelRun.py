@@ -199,6 +199,9 @@ class ParallelRun(unittest.TestCase):
         # near a box's face is pushed by the other rank's wall particles too.
         self.assert_equal_to_serial(self.case("hydrostaticTankMDBC2D", 0.05, 0.025), (2, 3), ("0.025", "0.05"))
         self.assert_equal_to_serial(self.mdbc_wall_beside_a_cut(), (2, 3), ("0.025", "0.05"))
+        for tag, law in (("mk", "monaghanKajtar; K 1"), ("lj", "lennardJones; Dc 3; r0 7e-4")):
+            with self.subTest(law=law):
+                self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, law, tag=tag), (3,), ("0.01", "0.02"))
 
     def mdbc_wall_beside_a_cut(self):
         """Two mDBC blocks of one size in the still-water tank, one each side of the middle: the
@@ -221,9 +224,6 @@ class ParallelRun(unittest.TestCase):
         self.assertFalse(np.any((walls[:, 0] < face) & (walls[:, 0] > 0.5) & (walls[:, 1] > 0.2) & (walls[:, 1] < 0.6)),
                          "rank 0 owns the left block's face")
         return case
-        for tag, law in (("mk", "monaghanKajtar; K 1"), ("lj", "lennardJones; Dc 3; r0 7e-4")):
-            with self.subTest(law=law):
-                self.assert_equal_to_serial(self.case("damBreak2D", 0.02, 0.01, law, tag=tag), (3,), ("0.01", "0.02"))
 
     def test_a_free_body(self):
         # The sinking cylinder (the deficiency correction, Lennard-Jones partner): every rank's
