@@ -53,6 +53,8 @@ public:
     // the bytes from rank 0 first, then rank 1's, ...; fromRank[r] says how many came from r.
     std::vector<std::byte> exchangeWithAll(const std::vector<std::vector<std::byte>>& toRank, std::vector<std::size_t>& fromRank) const;
 
+    // Waits for the requests: patiently where the ranks outnumber the cores (PatientWait.hpp).
+    void wait(std::span<MPI_Request> requests) const;
     // Every rank receives every rank's values, rank 0's first.
     std::vector<double> gatherToAll(std::span<const double> mine) const;
 
@@ -61,9 +63,19 @@ public:
     std::vector<std::byte> gatherToFirst(const std::vector<std::byte>& mine, std::vector<std::size_t>& fromRank) const;
 
 private:
+    // Starts a nonblocking MPI call, whose last argument is its request, and waits for it:
+    // complete(MPI_Ibcast, values, count, MPI_DOUBLE, 0, ranks_).
+    template <class Start, class... Arguments>
+    void complete(Start start, Arguments... arguments) const {
+        MPI_Request request;
+        start(arguments..., &request);
+        wait(std::span<MPI_Request>(&request, 1));
+    }
+
     MPI_Comm ranks_;
     int rank_ = 0;
     int size_ = 1;
+    bool patient_ = false;
 };
 
 // Runs `body` on this rank; a FatalError it throws on any rank stops every rank with the first

@@ -25,7 +25,7 @@ HaloExchange<D>::HaloExchange(const Communicator& ranks, ParticleSet<D>& set, co
         MPI_Irecv(&receiving[k], 1, MPI_UINT64_T, neighbours_[k], 0, ranks.handle(), &requests.emplace_back());
         MPI_Isend(&sending[k], 1, MPI_UINT64_T, neighbours_[k], 0, ranks.handle(), &requests.emplace_back());
     }
-    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    ranks_.wait(requests);
     std::uint32_t next = static_cast<std::uint32_t>(owned);
     receivePlaces_.resize(neighbours_.size());
     for (std::size_t k = 0; k < neighbours_.size(); ++k) {
@@ -70,7 +70,7 @@ void HaloExchange<D>::exchange(const std::vector<FieldBytes>& arrays) const {
         ++messagesSent_;
         MPI_Isend(outgoing[k].data(), mpiByteCount(outgoing[k].size()), MPI_BYTE, neighbours_[k], 1, ranks_.handle(), &requests.emplace_back());
     }
-    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    ranks_.wait(requests);
     for (std::size_t k = 0; k < neighbours; ++k) unpack(arrays, receivePlaces_[k], incoming[k]);
 }
 
