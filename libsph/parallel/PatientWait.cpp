@@ -20,8 +20,7 @@ void waitPatiently(std::span<MPI_Request> requests) {
     constexpr auto polling = 50us, shortestSleep = 5us, longestSleep = 200us;
     // Linux wakes a sleeping thread up to 50 us late by default (timer slack): 1 us instead, so
     // that a sleep overshoots what it was asked by little more than the scheduler's latency.
-    static const bool precise = prctl(PR_SET_TIMERSLACK, 1000UL) == 0;
-    (void)precise;
+    [[maybe_unused]] static const bool precise = prctl(PR_SET_TIMERSLACK, 1000UL) == 0;
     const Clock::time_point start = Clock::now();
     for (;;) {
         int done = 0;

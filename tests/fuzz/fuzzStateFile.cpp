@@ -8,12 +8,22 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    // VTK reads files only: each input is written to this process's own file first.
-    static const std::string file = "/tmp/sphkitFuzzState." + std::to_string(::getpid()) + ".vtu";
+    // VTK reads files only: each input is written to this process's own file first, removed
+    // when libFuzzer ends the process (exit() runs the static destructor).
+    struct ScratchFile {
+        std::filesystem::path path = std::filesystem::temp_directory_path() / ("sphkitFuzzState." + std::to_string(::getpid()) + ".vtu");
+        ~ScratchFile() {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+        }
+    };
+    static const ScratchFile scratch;
+    const std::string file = scratch.path.string();
     std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     for (int dimension = 2; dimension <= 3; ++dimension) {
         try {
