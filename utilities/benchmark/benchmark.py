@@ -8,7 +8,8 @@ itself, without start-up; the case writes only at its end time, and that write (
 
 Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
                                          [--factors 2 1 0.5] [--end-time T] [--repeat N] [--busy]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/).
+                                         [--roofline [--peak-gflops G] [--bandwidth B]] [--work DIR]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/ or --work).
 Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
 fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
 wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
@@ -20,6 +21,8 @@ thread per 3,000 particles, 800 in 3D) does not apply; the last column divides e
 time of the same case. --busy runs everything beside a busy process pinned on the last core, as
 a shared machine has one: the last column is then the slowdown that the solver's threads suffer
 from waiting for one another there (the target of doc/performance.md: 1.3 at most).
+--roofline adds, for each case's median 1-thread run, where its stages sit under the roofline of
+one core (roofline.py: the model, and the roofs measured or given by --peak-gflops, --bandwidth).
 """
 import argparse
 import os
@@ -29,13 +32,17 @@ import statistics
 import subprocess
 import sys
 
+import numpy as np
+
+import roofline
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 WORK = os.path.join(ROOT, "build", "benchmark")
 
 
-def prepare(case, spacing_factor):
-    directory = os.path.join(WORK, "%s-x%g" % (case, spacing_factor))
+def prepare(case, spacing_factor, work):
+    directory = os.path.join(work, "%s-x%g" % (case, spacing_factor))
     shutil.rmtree(directory, ignore_errors=True)
     shutil.copytree(os.path.join(ROOT, "utilities", "benchmark", case), directory)
     generate = os.path.join(directory, "system/generateParticlesDict")
@@ -83,7 +90,10 @@ def run(directory, threads, end_time=None):
     output = float(re.search(r"^\s+output\s+([0-9.]+) s", log, re.M).group(1))
     timed = wall - output
     peak = usage.ru_maxrss * 1024  # bytes (Linux reports kB)
-    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak}
+    evaluations = int(re.search(r"right-hand-side evaluations\s+(\d+)", log).group(1))
+    radius = float(re.search(r"support radius ([0-9.e+-]+)", log).group(1))
+    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak, "evaluations": evaluations, "radius": radius,
+            "stages": roofline.stage_seconds(log)}
 
 
 def start_busy_process():
@@ -101,30 +111,76 @@ def main():
     parser.add_argument("--end-time", type=float, help="simulated time of each run (default: the case's endTime)")
     parser.add_argument("--repeat", type=int, default=1, help="runs per configuration; the table gives the median (default 1)")
     parser.add_argument("--busy", action="store_true", help="run beside a busy process pinned on the last core")
+    parser.add_argument("--work", default=WORK, help="where the runs are written (default build/benchmark)")
+    parser.add_argument("--roofline", action="store_true", help="where each stage of the 1-thread runs sits under one core's roofline")
+    parser.add_argument("--peak-gflops", type=float, help="one core's peak double GFlop/s (default: 16 flops a cycle at /proc/cpuinfo's clock)")
+    parser.add_argument("--bandwidth", type=float, help="one core's memory bandwidth in GB/s (default: measured, a numpy copy)")
     args = parser.parse_args()
     if args.repeat < 1:
         raise SystemExit("benchmark: --repeat must be at least 1, not %d" % args.repeat)
+    if args.roofline and 1 not in args.threads:
+        raise SystemExit("benchmark: --roofline models the 1-thread runs: --threads must include 1")
+    if args.roofline and args.peak_gflops is None and roofline.core_peak_gflops() is None:
+        raise SystemExit("benchmark: --roofline: /proc/cpuinfo gives no clock; give --peak-gflops")
     factors = args.factors or ([2.0, 1.0, 0.5] if args.scaling else [1.0])
     busy = start_busy_process() if args.busy else None
     try:
-        peaks = measure(args, factors)
+        peaks, medians = measure(args, factors)
     finally:
         if busy:
             busy.kill()
+    if args.roofline:
+        print_roofline(args, medians)
     if len(peaks) > 1 and max(peaks)[0] > min(peaks)[0]:
         # The peak includes the libraries and buffers any run has: the difference isolates what a particle costs.
         (small, peakSmall), (large, peakLarge) = min(peaks), max(peaks)
         print("\nmemory per particle (largest minus smallest run): %.0f bytes" % ((peakLarge - peakSmall) / (large - small)))
 
 
+def print_roofline(args, medians):
+    """The roofline table of each case's median 1-thread run, from its final state's pairs."""
+    peak = args.peak_gflops or roofline.core_peak_gflops()
+    print("\nroofline of one core: peak %.1f GFlop/s%s" % (peak, "" if args.peak_gflops else " (16 flops a cycle at /proc/cpuinfo's clock)"))
+    print("\n| case | stage | time [s] | GFlop/s | GB/s | flops a byte | roof [GFlop/s] | share of the roof |")
+    print("|---|---|---|---|---|---|---|---|")
+    notes = []
+    for label, directory, r in medians:
+        written = [name for name in os.listdir(directory) if re.fullmatch(r"[0-9.e+-]+", name) and name != "0"]
+        state = os.path.join(directory, max(written, key=float))
+        fluid, walls = (points(os.path.join(state, part + ".vtu")) for part in ("fluid", "walls"))
+        dimension = fluid.shape[1]
+        models = roofline.stage_models(dimension, r["fluid"], r["walls"], roofline.count_pairs(fluid, r["radius"]),
+                                       roofline.count_pairs(fluid, r["radius"], walls), r["steps"], r["evaluations"])
+        moved = roofline.integrator_bytes_per_step(dimension, r["fluid"], r["walls"])
+        bandwidth = args.bandwidth or roofline.copy_bandwidth_gbs(moved)
+        notes.append("%s: bandwidth %.1f GB/s%s, ridge at %.2f flops a byte" % (
+            label, bandwidth, "" if args.bandwidth else " (one thread's numpy copy of %.1f MB, what a step's update moves)" % (moved / 1e6),
+            peak / bandwidth))
+        for stage, time, attained, traffic, intensity, roof, share in roofline.rows(r["stages"], models, peak, bandwidth):
+            print("| %s | %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.0f %% |" % (label, stage, time, attained, traffic, intensity, roof, 100 * share))
+    print("\n" + "\n".join(notes))
+
+
+def points(path):
+    """A state file's particle positions in the case's dimension (a 2D state's z is 0)."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    xyz = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+    return xyz[:, :2] if np.all(xyz[:, 2] == 0) else xyz
+
+
 def measure(args, factors):
-    """Runs every configuration and prints its row; returns (particles, peak memory) per row."""
+    """Runs every configuration and prints its row; returns (particles, peak memory) per row and
+    (label, directory, median 1-thread run) per case (the last run's state is on disk)."""
     print("| case | fluid + wall particles | threads | steps | time loop [s] | runs [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle | time / 1-thread time%s |"
           % (" (busy core)" if args.busy else ""))
     print("|---|---|---|---|---|---|---|---|---|---|---|")
-    peaks = []
+    peaks, medians = [], []
     for factor in factors:
-        directory = prepare(args.case, factor)
+        directory = prepare(args.case, factor, args.work)
         runs = {threads: [] for threads in args.threads}
         for _ in range(args.repeat):
             for threads in args.threads:
@@ -140,7 +196,9 @@ def measure(args, factors):
                 args.case, factor, r["fluid"], r["walls"], threads, r["steps"], median, times[0], times[-1], r["steps"] * r["fluid"] / median,
                 r["steps"] * (r["fluid"] + r["walls"]) / median, peak / 1e6, peak / (r["fluid"] + r["walls"]),
                 "%.2f" % (median / one_thread) if one_thread else "-"), flush=True)
-    return peaks
+        if 1 in runs:
+            medians.append(("%s dx x%g" % (args.case, factor), directory, sorted(runs[1], key=lambda r: r["wall"])[(len(runs[1]) - 1) // 2]))
+    return peaks, medians
 
 
 if __name__ == "__main__":
