@@ -51,6 +51,13 @@ class Roofline(unittest.TestCase):
                "    density + pressure      0.008 s    1.3 %\n    forces                  0.343 s   56.3 %\n    other                   0.151 s   24.8 %\n")
         self.assertEqual(roofline.stage_seconds(log), {"neighbour search": 0.023, "density + pressure": 0.008, "forces": 0.343, "other": 0.151})
 
+    def test_schemes_the_model_does_not_count_are_named(self):
+        log = ("Selecting equationOfState tait: rho0 1000\nSelecting density continuity\nSelecting viscosity laminar: nu 1e-6\n"
+               "Selecting densityDiffusion fourtakas: delta 0.1\nSelecting boundary model for patch tank (10 particles): dynamicBoundary\n"
+               "Selecting boundary model for patch lid (5 particles): dummyParticles\nSelecting time integrator symplectic: courant 0.2\n")
+        self.assertEqual(roofline.unmodelled(log), ["viscosity laminar", "time integrator symplectic", "walls dummyParticles"])
+        self.assertEqual(roofline.unmodelled(log.replace("laminar", "artificial").replace("symplectic", "verlet").replace("dummyParticles", "dynamicBoundary")), [])
+
     def test_the_benchmark_prints_the_stages_under_the_roofline(self):
         with tempfile.TemporaryDirectory() as work:
             run = subprocess.run([sys.executable, os.path.join(ROOT, "utilities", "benchmark", "benchmark.py"), "--case", "damBreak2D",

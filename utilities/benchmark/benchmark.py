@@ -93,7 +93,7 @@ def run(directory, threads, end_time=None):
     evaluations = int(re.search(r"right-hand-side evaluations\s+(\d+)", log).group(1))
     radius = float(re.search(r"support radius ([0-9.e+-]+)", log).group(1))
     return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak, "evaluations": evaluations, "radius": radius,
-            "stages": roofline.stage_seconds(log)}
+            "stages": roofline.stage_seconds(log), "unmodelled": roofline.unmodelled(log)}
 
 
 def start_busy_process():
@@ -145,6 +145,9 @@ def print_roofline(args, medians):
     print("|---|---|---|---|---|---|---|---|")
     notes = []
     for label, directory, r in medians:
+        if r["unmodelled"]:
+            raise SystemExit("benchmark: --roofline models the benchmark cases' schemes; %s selected %s (see utilities/benchmark/roofline.py)"
+                             % (directory, ", ".join(r["unmodelled"])))
         written = [name for name in os.listdir(directory) if re.fullmatch(r"[0-9.e+-]+", name) and name != "0"]
         state = os.path.join(directory, max(written, key=float))
         fluid, walls = (points(os.path.join(state, part + ".vtu")) for part in ("fluid", "walls"))

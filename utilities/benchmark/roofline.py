@@ -18,7 +18,8 @@ dynamic-boundary walls), with the pairs counted in the run's final state:
   both velocities and both densities; 6 D + 6 flops. A wall particle, its density alone: reads
   three values, writes two, 4 flops.
 The other stages (the neighbour search's sorts, the walls' pass, output) are left unmodelled:
-their counts of calls are not in the log.
+their counts of calls are not in the log. A run that selected other schemes is refused
+(`unmodelled` names them from its log).
 
 The roofs of one core: the peak as 16 double flops a cycle (two 256-bit FMA units, the width the
 build uses) at the clock /proc/cpuinfo reports, and the bandwidth of one thread copying, with
@@ -33,6 +34,17 @@ import numpy as np
 
 FLOPS_PER_PAIR = 80
 TAIT_FLOPS = 7
+# The schemes the model counts, as the solver log names them ("Selecting <model> <choice>").
+MODELLED = {"equationOfState": "tait", "density": "continuity", "viscosity": "artificial", "densityDiffusion": "fourtakas",
+            "time integrator": "verlet"}
+
+
+def unmodelled(log):
+    """What the run selected that the model does not count: ['<model> <choice>', ...]."""
+    found = [f"{model} {choice}" for model, choice in re.findall(r"^Selecting (time integrator|\w+) (\w+)", log, re.M)
+             if model in MODELLED and choice != MODELLED[model]]
+    found += [f"walls {model}" for model in re.findall(r"^Selecting boundary model for patch .*: (\w+)", log, re.M) if model != "dynamicBoundary"]
+    return found
 
 
 def count_pairs(points, radius, others=None):
