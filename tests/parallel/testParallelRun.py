@@ -23,16 +23,10 @@ import unittest
 import numpy as np
 import vtk
 
-from testParallelRates import arrays
-
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-BIN = os.path.abspath(os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin")))
-MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
-ENV = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-# Under the sanitizers (several times slower) each comparison runs on one rank count, the
-# smallest above one, and without its serial run: the memory checks see every path, and the
+# Under the sanitizers (SANITIZED: several times slower) each comparison runs on one rank count,
+# the smallest above one, and without its serial run: the memory checks see every path, and the
 # state holds every particle once; the release build compares every count with the serial run.
-SANITIZED = os.environ.get("SPHKIT_SANITIZED") == "1"
+from testParallelRates import BIN, ENV, MPIEXEC, ROOT, SANITIZED, arrays
 
 
 def edit(path, pattern, replacement, flags=re.M):

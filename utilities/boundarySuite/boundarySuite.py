@@ -22,11 +22,16 @@ doc/boundarySuite.md and doc/boundarySuite.csv:
 each with the wall time that produced it (runs two at a time, one thread each). Penetrations
 are counted at every step (the wallPenetrations function object).
 
-Usage: utilities/boundarySuite/boundarySuite.py [--quick] [--models=NAME,...]   (from the
-repository root; the binaries are taken from $SPHKIT_BIN or build/bin; --quick runs the
-hydrostatic tank at dx = 0.05 and the flows that hurt at their coarsest resolution only; the
-full suite takes about an hour; --models re-runs the deforming tank and the flows of the named
-flow models only and replaces their rows in doc/boundarySuite.md, keeping every other row)
+Usage: utilities/boundarySuite/boundarySuite.py [--quick] [--check] [--models=NAME,...] [--work DIR]
+(from the repository root; the binaries are taken from $SPHKIT_BIN or build/bin; the full suite
+takes about an hour; --quick runs the static shapes and the hydrostatic tank at dx = 0.05 and
+the flows that hurt at their coarsest resolution only; --models re-runs the deforming tank and
+the flows of the named flow models only and replaces their rows in doc/boundarySuite.md, keeping
+every other row; --check prepares every case as --quick would, with the suite's edits, and
+evaluates each once (wcsph -rates) instead of running it, in about 20 s and without writing
+doc/: a test runs it, so that a change to a shipped case that the suite edits stops a test, not
+the next suite run (the deforming tank, which the suite runs as shipped, is left out); the runs
+go to build/boundarySuite or --work DIR)
 """
 import concurrent.futures
 import csv
@@ -44,8 +49,9 @@ import tankRates  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
-WORK = os.path.join(ROOT, "build", "boundarySuite")
-QUICK = "--quick" in sys.argv
+WORK = sys.argv[sys.argv.index("--work") + 1] if "--work" in sys.argv else os.path.join(ROOT, "build", "boundarySuite")
+CHECK = "--check" in sys.argv
+QUICK = "--quick" in sys.argv or CHECK
 ONLY = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--models=")), None)
 sys.path.insert(0, os.path.join(ROOT, "cases", "sloshingTank2D"))
 from linearSloshing import AMPLITUDE as LINEAR_SLOSHING_AMPLITUDE  # noqa: E402
@@ -106,11 +112,24 @@ def edit(path, pattern, replacement):
         f.write(new)
 
 
+class Prepared(Exception):
+    """--check: the case was prepared and evaluated once; its row is not measured."""
+
+
 def run(directory, *arguments):
+    """wcsph on the directory: (wall seconds, the first line of its error or ""). With --check a
+    run in time is one evaluation instead, and any failure stops the suite."""
+    timed = not arguments
+    if CHECK:
+        arguments = ("-rates",)
     start = time.time()
     result = subprocess.run([os.path.join(BIN, "wcsph"), "-case", directory, *arguments], capture_output=True, text=True,
                             env=dict(os.environ, OMP_NUM_THREADS="1"))
     elapsed = time.time() - start
+    if CHECK and result.returncode != 0:
+        raise SystemExit("boundarySuite.py: wcsph -rates failed in %s:\n%s" % (directory, result.stdout + result.stderr))
+    if CHECK and timed:
+        raise Prepared()
     message = "" if result.returncode == 0 else result.stderr.strip().splitlines()[0]
     return elapsed, message
 
@@ -159,9 +178,16 @@ def tank_rows():
 
 
 def in_parallel(function, jobs):
-    """function(*job) for every job, two at a time (the machine's cores), results in job order."""
+    """function(*job) for every job, two at a time (the machine's cores), results in job order
+    (None for a job that --check only prepared)."""
+    def row(job):
+        try:
+            return function(*job)
+        except Prepared:
+            return None
+
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        return list(pool.map(lambda job: function(*job), jobs))
+        return list(pool.map(row, jobs))
 
 
 def most_behind_wall(directory):
@@ -214,7 +240,7 @@ def static_rows():
               ("deficiencyCorrectionBoundaryIntegral, calibrated", "type deficiencyCorrectionBoundaryIntegral; calibration calibrated; " + CORRECTION)]
     rows = []
     for shape, extent in (("rectangle", (4, 2)), ("rectangle", (6, 2)), ("ellipse", (2, 1)), ("ellipse", (3, 1))):
-        for spacing in (0.05, 0.025):
+        for spacing in (0.05,) if QUICK else (0.05, 0.025):
             reference, _, _ = static_row(shape, extent, spacing, "none", "type monaghanKajtar; K 1e-9;")
             for name, patch in models:
                 rms, largest, seconds = static_row(shape, extent, spacing, name, patch)
@@ -501,7 +527,13 @@ def main():
         unknown = [name for name in ONLY if name not in [m[0] for m in FLOW_MODELS]]
         if unknown:
             raise SystemExit("boundarySuite.py: --models: unknown %s; valid: %s" % (", ".join(unknown), ", ".join(m[0] for m in FLOW_MODELS)))
-        replace_rows(deforming_lines(deforming_rows()) + flow_lines(*flow_rows()))
+        if not CHECK:
+            replace_rows(deforming_lines(deforming_rows()) + flow_lines(*flow_rows()))
+            return
+    if CHECK:
+        started = time.time()
+        tank_rows(), static_rows(), hydrostatic_rows(), flow_rows()
+        print("boundarySuite.py --check: every case prepared and evaluated once in %.0f s" % (time.time() - started))
         return
     tanks = tank_rows()
     statics = static_rows()

@@ -9,8 +9,12 @@ when wcsph stops it: non-finite position or velocity, density outside [0.5, 2] r
 faster than c0 or outside the domain (walls included), or the integrator failing its step. For the adaptive
 SUNDIALS integrators dt caps the step. A run over the time limit counts as unstable (marked).
 
-Usage: utilities/stabilitySuite/stabilitySuite.py [--quick] [--jobs N]   (from the repository
-root; binaries from $SPHKIT_BIN or build/bin; --quick: two integrators on two cases)
+Usage: utilities/stabilitySuite/stabilitySuite.py [--quick] [--check] [--jobs N] [--work DIR]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; --quick: two integrators on
+two cases; --check: every case prepared, its edits applied and evaluated once, and every
+integrator's dictionary evaluated once, in seconds and without writing doc/ (a test runs it, so
+that a change to a shipped case that the suite edits stops a test, not the next suite run);
+runs in build/stabilitySuite or --work DIR)
 """
 import concurrent.futures
 import csv
@@ -24,8 +28,9 @@ import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
-WORK = os.path.join(ROOT, "build", "stabilitySuite")
+WORK = sys.argv[sys.argv.index("--work") + 1] if "--work" in sys.argv else os.path.join(ROOT, "build", "stabilitySuite")
 QUICK = "--quick" in sys.argv
+CHECK = "--check" in sys.argv
 JOBS = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 2
 TIME_LIMIT = 120  # seconds per run
 BISECTIONS = 3    # within the bracket [1, 8] or [0.1, 1]: the step known to within a factor of 1.3
@@ -108,7 +113,7 @@ def prepare(index, case):
     generated = subprocess.run([os.path.join(BIN, "generateParticles"), "-case", directory], capture_output=True, text=True)
     if generated.returncode != 0:
         sys.exit("stabilitySuite.py: generateParticles failed for %s:\n%s" % (name, generated.stdout + generated.stderr))
-    log = subprocess.run([os.path.join(BIN, "wcsph"), "-case", directory, "-rates"], capture_output=True, text=True).stdout
+    log = evaluate_once(directory, name)
     h = float(re.search(r"Selecting kernel .* h ([0-9.e+-]+),", log).group(1))
     c0 = float(re.search(r"c0 ([0-9.e+-]+)", log).group(1))
     nu = float(re.search(r"nu ([0-9.e+-]+)", log).group(1)) if "Selecting viscosity laminar" in log else 0.0
@@ -116,13 +121,34 @@ def prepare(index, case):
     return directory, min(h / c0, 0.125 * h * h / nu if nu > 0 else math.inf)
 
 
+def evaluate_once(directory, name):
+    """wcsph -rates on the directory: its log, or the suite stopped with wcsph's message."""
+    result = subprocess.run([os.path.join(BIN, "wcsph"), "-case", directory, "-rates"], capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit("stabilitySuite.py: wcsph -rates failed for %s:\n%s" % (name, result.stdout + result.stderr))
+    return result.stdout
+
+
+def write_integrator(directory, integrator, dt):
+    with open(os.path.join(directory, "system/timeIntegration"), "w") as f:
+        f.write("integrator { %s }\ncourant 0.2;\nfixedDeltaT %.9g;\n" % (integrator, dt))
+
+
+def check(prepared):
+    """Every integrator's dictionary, evaluated once in the first case."""
+    directory, dtRule = prepared[0]
+    for label, integrator in INTEGRATORS:
+        write_integrator(directory, integrator, dtRule)
+        evaluate_once(directory, "%s with %s" % (CASES[0][0], label))
+    print("Checked %d cases and %d integrators" % (len(CASES), len(INTEGRATORS)))
+
+
 def run(case, directory, integrator, dt, tag):
     """One run at the fixed step dt: (status, wall seconds, error or None)."""
     target = directory + "_" + tag
     shutil.rmtree(target, ignore_errors=True)
     shutil.copytree(directory, target)
-    with open(os.path.join(target, "system/timeIntegration"), "w") as f:
-        f.write("integrator { %s }\ncourant 0.2;\nfixedDeltaT %.9g;\n" % (integrator, dt))
+    write_integrator(target, integrator, dt)
     environment = dict(os.environ, OMP_NUM_THREADS="1")
     start = time.time()
     try:
@@ -179,6 +205,8 @@ def main():
     started = time.time()
     prepared = [prepare(i, case) for i, case in enumerate(CASES)]
     print("Prepared %d cases in %.0f s" % (len(CASES), time.time() - started), flush=True)
+    if CHECK:
+        return check(prepared)
     jobs = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=JOBS) as pool:
         for i, case in enumerate(CASES):
