@@ -6,7 +6,7 @@ run over their particle counts), as a Markdown table. The time loop is timed by 
 itself, without start-up; the case writes only at its end time, and that write (the solver's
 "output" part) is left out of the rate.
 
-Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--scaling]
+Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--ranks 2] [--scaling]
                                          [--factors 2 1 0.5] [--end-time T] [--repeat N] [--busy]
                                          [--roofline [--peak-gflops G] [--bandwidth B]] [--work DIR]
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/ or --work).
@@ -18,7 +18,10 @@ box extents are rounded to whole spacings. --end-time shortens the run (for the 
 a shared machine falls on all of them, and reports the median time loop with the fastest and
 the slowest. Every run sets its thread count with wcsph -threads, so the solver's own rule (one
 thread per 3,000 particles, 800 in 3D) does not apply; the last column divides each time by the 1-thread
-time of the same case. --busy runs everything beside a busy process pinned on the last core, as
+time of the same case, and gives the efficiency of a run on several threads or ranks against it
+(the 1-thread time over the thread or rank count times the run's). --ranks adds runs of
+`mpirun -np N --bind-to core wcsph -parallel -threads 1` (builds with MPI; where N passes the
+cores, --oversubscribe --bind-to none), taking turns with the others; their peak memory is the largest rank's. --busy runs everything beside a busy process pinned on the last core, as
 a shared machine has one: the last column is then the slowdown that the solver's threads suffer
 from waiting for one another there (the target of doc/performance.md: 1.3 at most).
 --roofline adds, for each case's median 1-thread run, where its stages sit under the roofline of
@@ -38,6 +41,7 @@ import roofline
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
+MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 WORK = os.path.join(ROOT, "build", "benchmark")
 
 
@@ -64,7 +68,9 @@ def prepare(case, spacing_factor, work):
     return directory
 
 
-def run(directory, threads, end_time=None):
+def run(directory, threads, end_time=None, ranks=None):
+    """One run of wcsph on `threads` threads, or on `ranks` MPI ranks of one thread each: its
+    particles, steps, time loop, peak memory, stages and what the roofline reads."""
     for name in os.listdir(directory):
         if re.fullmatch(r"[0-9.e+-]+", name) and name != "0":
             shutil.rmtree(os.path.join(directory, name))
@@ -76,20 +82,33 @@ def run(directory, threads, end_time=None):
         text = re.sub(r"(?m)^writeInterval\s+[^;]+;", "writeInterval %g;" % end_time, text)
         with open(control, "w") as f:
             f.write(text)
-    log_path = os.path.join(directory, "log.wcsph.%d" % threads)
+    command = [os.path.join(BIN, "wcsph"), "-case", directory, "-threads", str(threads)]
+    environment = None
+    if ranks:
+        placement = ["--oversubscribe", "--bind-to", "none"] if ranks > len(os.sched_getaffinity(0)) else ["--bind-to", "core"]
+        command = [MPIEXEC, "-np", str(ranks), *placement, command[0], "-parallel", *command[1:]]
+        environment = dict(os.environ, OMP_NUM_THREADS="1")
+        if os.geteuid() == 0:  # OpenMPI refuses root unless told
+            environment.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    log_path = os.path.join(directory, "log.wcsph.%s" % ("%dranks" % ranks if ranks else threads))
     with open(log_path, "w") as log:
-        process = subprocess.Popen([os.path.join(BIN, "wcsph"), "-case", directory, "-threads", str(threads)], stdout=log,
-                                   stderr=subprocess.STDOUT)
+        try:
+            process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=environment)
+        except FileNotFoundError:
+            raise SystemExit("benchmark: --ranks needs %s (OpenMPI's mpirun; $MPIEXEC names another)" % MPIEXEC)
         _, status, usage = os.wait4(process.pid, 0)
     with open(log_path) as f:
         log = f.read()
     if status != 0:
         raise SystemExit("benchmark: wcsph failed on %s, see %s" % (directory, log_path))
-    steps, fluid, walls = map(int, re.search(r"End at t = [0-9.e+-]+: (\d+) steps, (\d+) fluid \+ (\d+) wall particles", log).groups())
+    end = re.search(r"End at t = [0-9.e+-]+: (\d+) steps, (\d+) fluid (?:\+ (\d+) wall particles|particles on \d+ ranks)", log)
+    steps, fluid, walls = int(end.group(1)), int(end.group(2)), int(end.group(3) or 0)
     wall = float(re.search(r"Wall time ([0-9.]+) s", log).group(1))
-    output = float(re.search(r"^\s+output\s+([0-9.]+) s", log, re.M).group(1))
+    output = float(re.search(r"^\s+output\s+([0-9.]+) s", log, re.M).group(1))  # on several ranks, the slowest rank's
     timed = wall - output
     peak = usage.ru_maxrss * 1024  # bytes (Linux reports kB)
+    if ranks:  # mpirun's own usage is not the ranks'
+        peak = float(re.search(r"Peak memory of a rank: largest ([0-9.]+) MiB", log).group(1)) * 2**20
     evaluations = int(re.search(r"right-hand-side evaluations\s+(\d+)", log).group(1))
     radius = float(re.search(r"support radius ([0-9.e+-]+)", log).group(1))
     return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak, "evaluations": evaluations, "radius": radius,
@@ -106,6 +125,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default="damBreak2D")
     parser.add_argument("--threads", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--ranks", type=int, nargs="+", default=[], help="MPI rank counts to run, one thread a rank (builds with MPI)")
     parser.add_argument("--scaling", action="store_true", help="also at 4x fewer and 4x more particles (2D: spacing x2, x0.5)")
     parser.add_argument("--factors", type=float, nargs="+", help="spacing factors to run (default 1, or 2 1 0.5 with --scaling)")
     parser.add_argument("--end-time", type=float, help="simulated time of each run (default: the case's endTime)")
@@ -118,6 +138,8 @@ def main():
     args = parser.parse_args()
     if args.repeat < 1:
         raise SystemExit("benchmark: --repeat must be at least 1, not %d" % args.repeat)
+    if args.ranks and (1 not in args.threads or min(args.ranks) < 1):
+        raise SystemExit("benchmark: --ranks compares with the 1-thread run: --threads must include 1, and a rank count is at least 1")
     if args.roofline and 1 not in args.threads:
         raise SystemExit("benchmark: --roofline models the 1-thread runs: --threads must include 1")
     if args.roofline and args.peak_gflops is None and roofline.core_peak_gflops() is None:
@@ -182,27 +204,33 @@ def measure(args, factors):
           % (" (busy core)" if args.busy else ""))
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     peaks, medians = [], []
+    configurations = [(threads, None) for threads in args.threads] + [(1, ranks) for ranks in args.ranks]
     for factor in factors:
         directory = prepare(args.case, factor, args.work)
-        runs = {threads: [] for threads in args.threads}
+        runs = {configuration: [] for configuration in configurations}
         for _ in range(args.repeat):
-            for threads in args.threads:
-                runs[threads].append(run(directory, threads, args.end_time))
-        one_thread = statistics.median(r["wall"] for r in runs[1]) if 1 in runs else None
-        for threads in args.threads:
-            times = sorted(r["wall"] for r in runs[threads])
+            for threads, ranks in configurations:
+                runs[threads, ranks].append(run(directory, threads, args.end_time, ranks))
+        one_thread = statistics.median(r["wall"] for r in runs[1, None]) if (1, None) in runs else None
+        for threads, ranks in configurations:
+            times = sorted(r["wall"] for r in runs[threads, ranks])
             median = statistics.median(times)
-            peak = max(r["peak"] for r in runs[threads])
-            r = runs[threads][0]  # particles and steps are the same in every run
-            peaks.append((r["fluid"] + r["walls"], peak))
-            print("| %s dx x%g | %d + %d | %d | %d | %.3g | %.3g-%.3g | %.3g | %.3g | %.0f MB | %.0f | %s |" % (
-                args.case, factor, r["fluid"], r["walls"], threads, r["steps"], median, times[0], times[-1], r["steps"] * r["fluid"] / median,
-                r["steps"] * (r["fluid"] + r["walls"]) / median, peak / 1e6, peak / (r["fluid"] + r["walls"]),
-                "%.2f" % (median / one_thread) if one_thread else "-"), flush=True)
-        if 1 in runs:
-            medians.append(("%s dx x%g" % (args.case, factor), directory, sorted(runs[1], key=lambda r: r["wall"])[(len(runs[1]) - 1) // 2]))
+            peak = max(r["peak"] for r in runs[threads, ranks])
+            r = runs[threads, ranks][0]  # particles and steps are the same in every run
+            fluid, walls = r["fluid"], runs[1, None][0]["walls"] if ranks else r["walls"]  # a parallel log counts the fluid only
+            if not ranks:  # a rank's peak is its share's
+                peaks.append((fluid + walls, peak))
+            workers = ranks or threads
+            ratio = "-" if not one_thread else "%.2f" % (median / one_thread) + (
+                " (efficiency %.0f %%)" % (100 * one_thread / (workers * median)) if workers > 1 else "")
+            print("| %s dx x%g | %d + %d | %s | %d | %.3g | %.3g-%.3g | %.3g | %.3g | %.0f MB%s | %s | %s |" % (
+                args.case, factor, fluid, walls, "%d ranks x 1" % ranks if ranks else threads, r["steps"], median, times[0], times[-1],
+                r["steps"] * fluid / median, r["steps"] * (fluid + walls) / median, peak / 1e6, " (a rank)" if ranks else "",
+                "-" if ranks else "%.0f" % (peak / (fluid + walls)), ratio), flush=True)
+        if (1, None) in runs:
+            ones = runs[1, None]
+            medians.append(("%s dx x%g" % (args.case, factor), directory, sorted(ones, key=lambda r: r["wall"])[(len(ones) - 1) // 2]))
     return peaks, medians
-
 
 if __name__ == "__main__":
     main()

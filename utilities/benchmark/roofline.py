@@ -136,6 +136,6 @@ def rows(seconds, models, peak_gflops, bandwidth_gbs):
 
 
 def stage_seconds(log):
-    """The solver log's 'Time per part' block: {stage: seconds}."""
-    block = log.split("Time per part:", 1)[1]
+    """The solver log's 'Time per part' block: {stage: seconds} (on several ranks, the largest)."""
+    block = re.split(r"Time per part[^:\n]*:", log, maxsplit=1)[1]
     return {name.strip(): float(value) for name, value in re.findall(r"^\s{4}(\S[^\n]*?)\s+([0-9.]+) s\s", block, re.M)}
