@@ -21,7 +21,8 @@ thread per 3,000 particles, 800 in 3D) does not apply; the last column divides e
 time of the same case, and gives the efficiency of a run on several threads or ranks against it
 (the 1-thread time over the thread or rank count times the run's). --ranks adds runs of
 `mpirun -np N --bind-to core wcsph -parallel -threads 1` (builds with MPI; where N passes the
-cores, --oversubscribe --bind-to none), taking turns with the others; their peak memory is the largest rank's. --busy runs everything beside a busy process pinned on the last core, as
+cores, --oversubscribe --bind-to none), taking turns with the others; their peak memory is the
+largest rank's. --busy runs everything beside a busy process pinned on the last core, as
 a shared machine has one: the last column is then the slowdown that the solver's threads suffer
 from waiting for one another there (the target of doc/performance.md: 1.3 at most).
 --roofline adds, for each case's median 1-thread run, where its stages sit under the roofline of
@@ -231,6 +232,7 @@ def measure(args, factors):
             ones = runs[1, None]
             medians.append(("%s dx x%g" % (args.case, factor), directory, sorted(ones, key=lambda r: r["wall"])[(len(ones) - 1) // 2]))
     return peaks, medians
+
 
 if __name__ == "__main__":
     main()

@@ -206,7 +206,8 @@ def main():
     prepared = [prepare(i, case) for i, case in enumerate(CASES)]
     print("Prepared %d cases in %.0f s" % (len(CASES), time.time() - started), flush=True)
     if CHECK:
-        return check(prepared)
+        check(prepared)
+        return
     jobs = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=JOBS) as pool:
         for i, case in enumerate(CASES):
