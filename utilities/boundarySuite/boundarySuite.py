@@ -33,6 +33,7 @@ doc/: a test runs it, so that a change to a shipped case that the suite edits st
 the next suite run (the deforming tank, which the suite runs as shipped, is left out); the runs
 go to build/boundarySuite or --work DIR)
 """
+import argparse
 import concurrent.futures
 import csv
 import glob
@@ -49,10 +50,18 @@ import tankRates  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
-WORK = sys.argv[sys.argv.index("--work") + 1] if "--work" in sys.argv else os.path.join(ROOT, "build", "boundarySuite")
-CHECK = "--check" in sys.argv
-QUICK = "--quick" in sys.argv or CHECK
-ONLY = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--models=")), None)
+# An unknown or incomplete option stops here: a mistyped --check would otherwise run the hour-long
+# suite and rewrite doc/.
+_parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+_parser.add_argument("--quick", action="store_true")
+_parser.add_argument("--check", action="store_true")
+_parser.add_argument("--models", type=lambda names: names.split(","), help="NAME,...: the flow models to re-run")
+_parser.add_argument("--work", default=os.path.join(ROOT, "build", "boundarySuite"))
+_options = _parser.parse_args()
+WORK = _options.work
+CHECK = _options.check
+QUICK = _options.quick or CHECK
+ONLY = _options.models
 sys.path.insert(0, os.path.join(ROOT, "cases", "sloshingTank2D"))
 from linearSloshing import AMPLITUDE as LINEAR_SLOSHING_AMPLITUDE  # noqa: E402
 

@@ -16,6 +16,7 @@ integrator's dictionary evaluated once, in seconds and without writing doc/ (a t
 that a change to a shipped case that the suite edits stops a test, not the next suite run);
 runs in build/stabilitySuite or --work DIR)
 """
+import argparse
 import concurrent.futures
 import csv
 import math
@@ -28,10 +29,20 @@ import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
-WORK = sys.argv[sys.argv.index("--work") + 1] if "--work" in sys.argv else os.path.join(ROOT, "build", "stabilitySuite")
-QUICK = "--quick" in sys.argv
-CHECK = "--check" in sys.argv
-JOBS = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 2
+# An unknown or incomplete option stops here: a mistyped --check would otherwise run the suite
+# and rewrite doc/.
+_parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+_parser.add_argument("--quick", action="store_true")
+_parser.add_argument("--check", action="store_true")
+_parser.add_argument("--jobs", type=int, default=2)
+_parser.add_argument("--work", default=os.path.join(ROOT, "build", "stabilitySuite"))
+_options = _parser.parse_args()
+if _options.jobs < 1:
+    _parser.error("argument --jobs: at least 1, not %d" % _options.jobs)
+WORK = _options.work
+QUICK = _options.quick
+CHECK = _options.check
+JOBS = _options.jobs
 TIME_LIMIT = 120  # seconds per run
 BISECTIONS = 3    # within the bracket [1, 8] or [0.1, 1]: the step known to within a factor of 1.3
 
