@@ -3,15 +3,16 @@
 // FluidSystem.tpp; one instantiation per kernel x viscosity x diffusion x terms.
 //
 // Fluid-fluid pairs are evaluated once each, in cell order: the inputs a pair reads are copied
-// into that order, chunks of it are dealt to the threads in turn (balanced where work gathers
-// near walls, and the same for a given thread count, so a run is reproducible), and a thread
-// adds to both particles of a pair in its own accumulator; a second pass sums the accumulators,
-// adds gravity and the fluid-wall terms, and writes the rates in storage order. Summation order
-// depends on the thread count (rates agree to round-off, not bit for bit). In a step's last
-// evaluation with particle shifting, each particle's pair loop is followed by the shifting pass's
-// sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per pair; in 2D
-// they read the distances and gradient factors the pair loop stored. With
-// delta-SPH the pass reads the moment and density differences from its gradient sums.
+// into that order, each thread takes one contiguous block of it (the same for a given thread
+// count, so a run is reproducible; the blocks of the cell list's placing and of the copies, so a
+// thread reads mostly what it wrote itself: doc/performance.md, "One block per thread"), and a
+// thread adds to both particles of a pair in its own accumulator; a second pass sums the
+// accumulators, adds gravity and the fluid-wall terms, and writes the rates in storage order.
+// Summation order depends on the thread count (rates agree to round-off, not bit for bit). In a
+// step's last evaluation with particle shifting, each particle's pair loop is followed by the
+// shifting pass's sums over the same list (ShiftingPairSums.hpp): a branch per particle, not per
+// pair; in 2D they read the distances and gradient factors the pair loop stored. With delta-SPH
+// the pass reads the moment and density differences from its gradient sums.
 #include "physics/FluidPairTerms.hpp"
 #include "physics/ShiftingPairSums.hpp"
 
@@ -37,7 +38,6 @@ public:
     // cost more than one fused scalar loop, which 2D keeps (doc/performance.md, "Pairs in vector
     // lanes (3D)").
     static constexpr std::size_t lanes = D == 3 ? 4 : 1;
-    static constexpr std::size_t chunk = 256;
     // What delta-SPH's gradient sums per particle: the moment matrix, then the density differences.
     using Moment = Eigen::Matrix<double, D, D>;
     static constexpr int gradientSumCount = D * D + D;
@@ -243,7 +243,7 @@ private:
         std::vector<std::uint32_t>& kept = ordered_.neighbourLists[thread_];
         kept.clear();
         const Kernel kernel = kernel_;
-#pragma omp for schedule(static, chunk)
+#pragma omp for schedule(static)
         for (std::size_t k = 0; k < n_; ++k) {
             const std::array<double, D> xk = sortedPosition(k);
             const std::size_t count = listNeighbours<Wraps::value>(cells_, fluidStencil(k), xk, k + 1);
@@ -270,7 +270,7 @@ private:
             Eigen::Map<Vec<D>>(sums + k * gradientSumCount + D * D) += differencesK;
         }  // implicit barrier: every pair is in
         double* const gradients = n_ > 0 ? ordered_.densityGradient.data()->data() : nullptr;
-#pragma omp for schedule(static, chunk)
+#pragma omp for schedule(static)
         for (std::size_t k = 0; k < n_; ++k) {
             Moment moment = Moment::Zero();
             Vec<D> sum = Vec<D>::Zero();
@@ -296,7 +296,7 @@ private:
         double* const as = accelerations_;
         [[maybe_unused]] double* const drhoK = densityRates_;
         [[maybe_unused]] const std::uint32_t* kept = Terms::densityGradient ? ordered_.neighbourLists[thread_].data() : nullptr;
-#pragma omp for schedule(static, chunk) nowait
+#pragma omp for schedule(static) nowait
         for (std::size_t k = 0; k < n_; ++k) {
             const std::array<double, D> xk = sortedPosition(k);
             std::array<double, D> vk{};
@@ -402,7 +402,7 @@ private:
     // particle) and writes the rates in storage order.
     template <class Wraps>
     void sumWithWallTerms([[maybe_unused]] Wraps wraps) {
-#pragma omp for schedule(static, chunk)
+#pragma omp for schedule(static)
         for (std::size_t k = 0; k < n_; ++k) {
             const std::size_t i = cells_.sortedIndex(k);
             if (i >= owned_ || (wanted_ && !wanted_[i])) continue;

@@ -87,7 +87,7 @@ void sumShiftingPairs(const ShiftingViews<D>& in, const Kernel& kernel, std::vec
     std::vector<double> unusedScratch;
     auto stencilCell = std::numeric_limits<std::uint32_t>::max();
     typename CellLinkedList<D>::StencilRanges stencil;
-#pragma omp for schedule(static, 256)
+#pragma omp for schedule(static)
     for (std::size_t k = 0; k < places; ++k) {
         if (cells.cellAt(k) != stencilCell) {
             stencilCell = cells.cellAt(k);
@@ -110,7 +110,7 @@ void completeShiftingSums(const ShiftingViews<D>& in, const Kernel& kernel) {
     ParticleShiftingScratch<D>& scratch = in.scratch;
     auto stencilCell = std::numeric_limits<std::uint32_t>::max();
     typename CellLinkedList<D>::StencilRanges wallStencil;
-#pragma omp for schedule(static, 256)
+#pragma omp for schedule(static)
     for (std::size_t k = 0; k < cells.pointCount(); ++k) {
         const std::size_t i = cells.sortedIndex(k);
         if (i >= in.n) continue;
