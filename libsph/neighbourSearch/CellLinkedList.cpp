@@ -8,7 +8,7 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <utility>
+#include <algorithm>
 
 namespace sph {
 
@@ -48,12 +48,6 @@ CellLinkedList<D>::CellLinkedList(const Vec<D>& lower, const Vec<D>& upper, doub
 }
 
 namespace {
-
-// The share [first, last) of `count` items that thread `thread` of `team` takes.
-std::pair<std::size_t, std::size_t> shareOf(std::size_t count, int thread, int team) {
-    const auto t = static_cast<std::size_t>(thread), threads = static_cast<std::size_t>(team);
-    return {count * t / threads, count * (t + 1) / threads};
-}
 
 // Calls row(first, last) for the cells [first, last] of each row of the stencil around the cell
 // at c: five consecutive cells, or one cell at a time across a periodic x boundary. A local
@@ -96,65 +90,64 @@ void forEachStencilRow(const std::array<int, D>& c, const std::array<int, D>& di
 
 // A counting sort, in parallel by destination: each thread counts, then places, the points of
 // its own range of cells, reading every point's cell (4 bytes) but moving only its own points.
-// The order is the serial sort's whatever the number of threads (runs stay reproducible bit for
-// bit), and no array per thread and cell is summed across threads (in 2D there are more cells
-// than points).
+// The order is the serial sort's whatever the number of threads and the ranges (runs stay
+// reproducible bit for bit), and no array per thread and cell is summed across threads (in 2D
+// there are more cells than points). A thread's range starts at the cell of the place where its
+// block of the last build's places started (the loops over places give each thread one
+// contiguous block), so it writes the cells' starts that it reads afterwards; at the first build,
+// ranges of as many cells. The counts become each cell's end, and placing the points backwards
+// takes every end down to its cell's start, in one array.
 template <int D>
 void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
     const std::size_t n = end - begin, cells = cellCount();
-    cellOf_.resize(n);
-    nextPlace_.resize(cells);
-    sorted_.resize(n);
-    sortedPosition_.resize(n + readablePastEnd);
-    std::fill(sortedPosition_.begin() + static_cast<std::ptrdiff_t>(n), sortedPosition_.end(), Vec<D>::Zero());
-    sortedCell_.resize(n);
 #pragma omp parallel
     {
-        const int team = omp_get_num_threads(), thread = omp_get_thread_num();
+        const auto team = static_cast<std::size_t>(omp_get_num_threads()), thread = static_cast<std::size_t>(omp_get_thread_num());
 #pragma omp single
-        threadTotals_.resize(static_cast<std::size_t>(team));  // implicit barrier
+        {
+            threadTotals_.resize(team);
+            firstCellOfThread_.resize(team + 1);
+            const std::size_t lastCount = sortedCell_.size();
+            for (std::size_t t = 0; t <= team; ++t)
+                firstCellOfThread_[t] = t == team ? cells : lastCount > 0 ? sortedCell_[lastCount * t / team] : cells * t / team;
+            firstCellOfThread_[0] = 0;
+            cellOf_.resize(n);
+            sorted_.resize(n);
+            sortedPosition_.resize(n + readablePastEnd);
+            std::fill(sortedPosition_.begin() + static_cast<std::ptrdiff_t>(n), sortedPosition_.end(), Vec<D>::Zero());
+            sortedCell_.resize(n);
+        }  // implicit barrier
 #pragma omp for schedule(static)
         for (std::size_t k = 0; k < n; ++k) cellOf_[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
-        // Each cell's count, then each range's starts from the earlier ranges' totals.
-        const auto [firstCell, lastCell] = shareOf(cells, thread, team);
-        std::fill(nextPlace_.begin() + static_cast<std::ptrdiff_t>(firstCell), nextPlace_.begin() + static_cast<std::ptrdiff_t>(lastCell), 0);
+        // Plain pointers: a store through a member's data would make the compiler reload the others.
+        const std::uint32_t* const cellOf = cellOf_.data();
+        std::uint32_t* const cellStart = cellStart_.data();
+        const std::size_t firstCell = firstCellOfThread_[thread], lastCell = firstCellOfThread_[thread + 1];
+        std::fill(cellStart + firstCell, cellStart + lastCell, 0);
         std::uint32_t total = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            const std::uint32_t c = cellOf_[k];
+            const std::uint32_t c = cellOf[k];
             if (c >= firstCell && c < lastCell) {
-                ++nextPlace_[c];
+                ++cellStart[c];
                 ++total;
             }
         }
-        threadTotals_[static_cast<std::size_t>(thread)] = total;
+        threadTotals_[thread] = total;
 #pragma omp barrier
-        std::uint32_t start = 0;
-        for (int t = 0; t < thread; ++t) start += threadTotals_[static_cast<std::size_t>(t)];
+        std::uint32_t cellEnd = 0;
+        for (std::size_t t = 0; t < thread; ++t) cellEnd += threadTotals_[t];
         for (std::size_t c = firstCell; c < lastCell; ++c) {
-            const std::uint32_t count = nextPlace_[c];
-            cellStart_[c] = start;
-            nextPlace_[c] = start;
-            start += count;
+            cellEnd += cellStart[c];
+            cellStart[c] = cellEnd;
         }
-#pragma omp barrier
-        // Placing splits the cells anew, by the places they fill, so that threads move as many points.
-        const auto [firstPlace, lastPlace] = shareOf(n, thread, team);
-        const auto cellsStartingBy = [&](std::size_t place) {
-            return static_cast<std::size_t>(std::upper_bound(cellStart_.begin(), cellStart_.end() - 1, place) - cellStart_.begin());
-        };
-        const std::size_t placingFrom = thread == 0 ? 0 : cellsStartingBy(firstPlace);
-        const std::size_t placingTo = thread == team - 1 ? cells : cellsStartingBy(lastPlace);
-        // Plain pointers: a store through a member's data would make the compiler reload the others.
-        const std::uint32_t* const cellOf = cellOf_.data();
-        std::uint32_t* const nextPlace = nextPlace_.data();
         std::uint32_t* const sorted = sorted_.data();
         std::uint32_t* const sortedCell = sortedCell_.data();
         Vec<D>* const sortedPosition = sortedPosition_.data();
         const Vec<D>* const from = points.data() + begin;
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = n; k-- > 0;) {
             const std::uint32_t c = cellOf[k];
-            if (c >= placingFrom && c < placingTo) {
-                const std::uint32_t place = nextPlace[c]++;
+            if (c >= firstCell && c < lastCell) {
+                const std::uint32_t place = --cellStart[c];
                 sorted[place] = static_cast<std::uint32_t>(begin + k);
                 sortedPosition[place] = from[k];
                 sortedCell[place] = c;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <string>
 
 namespace {
 
@@ -68,37 +69,47 @@ TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
 }
 
 TEST(CellLinkedList, OrderIsTheStableSortsWhateverTheNumberOfThreads) {
-    // Crowded cells beside empty ones, and only points [100, 1950) listed.
+    // Crowded cells beside empty ones, and only points [100, 1950) listed; built twice, the
+    // second time with the points moved, so that the threads' ranges of cells come from the
+    // first build's places.
     std::mt19937 random(11);
     std::normal_distribution<double> coordinate(0.3, 0.1);
     std::vector<sph::Vec<2>> points(2000);
     for (auto& p : points) p = {std::clamp(coordinate(random), 0.0, 0.999), std::clamp(coordinate(random), 0.0, 0.999)};
+    std::vector<sph::Vec<2>> moved = points;
+    for (auto& p : moved) p = {std::clamp(p.x() + 0.2 * p.y(), 0.0, 0.999), std::clamp(0.999 - p.y() * p.y(), 0.0, 0.999)};
     const std::size_t begin = 100, end = 1950;
     const auto cellOf = [](const sph::Vec<2>& p) { return static_cast<std::uint32_t>(p.y() * 20) * 20 + static_cast<std::uint32_t>(p.x() * 20); };
-    std::vector<std::uint32_t> expected(end - begin);
-    std::iota(expected.begin(), expected.end(), static_cast<std::uint32_t>(begin));
-    std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t i, std::uint32_t j) { return cellOf(points[i]) < cellOf(points[j]); });
+    const auto expectStableSort = [&](const sph::CellLinkedList<2>& cells, const std::vector<sph::Vec<2>>& at, const std::string& where) {
+        std::vector<std::uint32_t> expected(end - begin);
+        std::iota(expected.begin(), expected.end(), static_cast<std::uint32_t>(begin));
+        std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t i, std::uint32_t j) { return cellOf(at[i]) < cellOf(at[j]); });
+        ASSERT_EQ(cells.pointCount(), expected.size());
+        for (std::size_t k = 0; k < expected.size(); ++k) {
+            ASSERT_EQ(cells.sortedIndex(k), expected[k]) << where << ", place " << k;
+            ASSERT_EQ(cells.cellAt(k), cellOf(at[expected[k]]));
+            ASSERT_EQ(cells.sortedPosition(k), at[expected[k]]);
+        }
+        // The cells' starts: a point's stencil finds exactly the listed points within the radius.
+        for (const sph::Vec<2>& x : {at[begin], at[end - 1]}) {
+            std::size_t found = 0, within = 0;
+            cells.forEachNeighbour(x, 0.1, [&](std::uint32_t j, const sph::Vec<2>&, double) {
+                EXPECT_TRUE(j >= begin && j < end);
+                ++found;
+            });
+            for (std::size_t j = begin; j < end; ++j) within += (at[j] - x).squaredNorm() < 0.01;
+            EXPECT_EQ(found, within) << where;
+            EXPECT_GT(within, 10u) << where;
+        }
+    };
     const sph::test::RestoreThreadCount restore;
     for (const int threads : {1, 2, 3, 7}) {
         omp_set_num_threads(threads);
         sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
         cells.build(points, begin, end);
-        ASSERT_EQ(cells.pointCount(), expected.size());
-        for (std::size_t k = 0; k < expected.size(); ++k) {
-            ASSERT_EQ(cells.sortedIndex(k), expected[k]) << threads << " threads, place " << k;
-            ASSERT_EQ(cells.cellAt(k), cellOf(points[expected[k]]));
-            ASSERT_EQ(cells.sortedPosition(k), points[expected[k]]);
-        }
-        // The cells' starts: a point's stencil finds exactly the listed points within the radius.
-        const sph::Vec<2> x(0.31, 0.28);
-        std::size_t found = 0, within = 0;
-        cells.forEachNeighbour(x, 0.1, [&](std::uint32_t j, const sph::Vec<2>&, double) {
-            EXPECT_TRUE(j >= begin && j < end);
-            ++found;
-        });
-        for (std::size_t j = begin; j < end; ++j) within += (points[j] - x).squaredNorm() < 0.01;
-        EXPECT_EQ(found, within);
-        EXPECT_GT(within, 100u);
+        expectStableSort(cells, points, std::to_string(threads) + " threads, first build");
+        cells.build(moved, begin, end);
+        expectStableSort(cells, moved, std::to_string(threads) + " threads, second build");
     }
 }
 
