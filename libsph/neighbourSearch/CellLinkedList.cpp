@@ -6,9 +6,10 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <algorithm>
+#include <type_traits>
 
 namespace sph {
 
@@ -88,15 +89,18 @@ void forEachStencilRow(const std::array<int, D>& c, const std::array<int, D>& di
 
 }  // namespace
 
-// A counting sort, in parallel by destination: each thread counts, then places, the points of
-// its own range of cells, reading every point's cell (4 bytes) but moving only its own points.
-// The order is the serial sort's whatever the number of threads and the ranges (runs stay
-// reproducible bit for bit), and no array per thread and cell is summed across threads (in 2D
-// there are more cells than points). A thread's range starts at the cell of the place where its
-// block of the last build's places started (the loops over places give each thread one
+// A counting sort, in parallel by destination: each thread takes a range of cells, counts and
+// places the points in it, and moves only those. A thread's range starts at the cell of the place
+// where its block of the last build's places started (the loops over places give each thread one
 // contiguous block), so it writes the cells' starts that it reads afterwards; at the first build,
-// ranges of as many cells. The counts become each cell's end, and placing the points backwards
-// takes every end down to its cell's start, in one array.
+// ranges of as many cells. Between the sorts of the storage by cell the points of a thread's
+// block of storage lie mostly in its own cells: it reads only its block, and lists the strays
+// (points of its block in another thread's cells) for their thread, which reads those lists
+// instead of every point. The order is the serial sort's whatever the number of threads and the
+// ranges (runs stay reproducible bit for bit), and no array per thread and cell is summed across
+// threads (in 2D there are more cells than points). The counts become each cell's end, and placing
+// the points backwards (the later blocks' strays, the own block, the earlier blocks' strays) takes
+// every end down to its cell's start, in one array.
 template <int D>
 void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t begin, std::size_t end) {
     const std::size_t n = end - begin, cells = cellCount();
@@ -106,30 +110,64 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
 #pragma omp single
         {
             threadTotals_.resize(team);
+            straysOfThread_.resize(team);
+            strayCountOfThread_.resize(team);
             firstCellOfThread_.resize(team + 1);
             const std::size_t lastCount = sortedCell_.size();
-            for (std::size_t t = 0; t <= team; ++t)
-                firstCellOfThread_[t] = t == team ? cells : lastCount > 0 ? sortedCell_[lastCount * t / team] : cells * t / team;
             firstCellOfThread_[0] = 0;
+            for (std::size_t t = 1; t < team; ++t) firstCellOfThread_[t] = lastCount > 0 ? sortedCell_[lastCount * t / team] : cells * t / team;
+            firstCellOfThread_[team] = cells;
             cellOf_.resize(n);
             sorted_.resize(n);
             sortedPosition_.resize(n + readablePastEnd);
             std::fill(sortedPosition_.begin() + static_cast<std::ptrdiff_t>(n), sortedPosition_.end(), Vec<D>::Zero());
             sortedCell_.resize(n);
         }  // implicit barrier
-#pragma omp for schedule(static)
-        for (std::size_t k = 0; k < n; ++k) cellOf_[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
         // Plain pointers: a store through a member's data would make the compiler reload the others.
-        const std::uint32_t* const cellOf = cellOf_.data();
+        std::uint32_t* const cellOf = cellOf_.data();
         std::uint32_t* const cellStart = cellStart_.data();
         const std::size_t firstCell = firstCellOfThread_[thread], lastCell = firstCellOfThread_[thread + 1];
+        const std::size_t firstPoint = n * thread / team, lastPoint = n * (thread + 1) / team;
+        const auto inRange = [firstCell, lastCell](std::uint32_t c) { return c >= firstCell && c < lastCell; };
         std::fill(cellStart + firstCell, cellStart + lastCell, 0);
+        // Apart from the count, so that it runs in vector lanes.
+        for (std::size_t k = firstPoint; k < lastPoint; ++k) cellOf[k] = static_cast<std::uint32_t>(cellIndex(points[begin + k]));
+        std::vector<std::uint32_t>& strays = straysOfThread_[thread];
+        if (team > 1 && strays.size() < lastPoint - firstPoint) strays.resize(lastPoint - firstPoint);  // never shrunk: no zeroing each build
+        std::uint32_t* const stray = strays.data();
+        std::size_t strayCount = 0;
         std::uint32_t total = 0;
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::uint32_t c = cellOf[k];
-            if (c >= firstCell && c < lastCell) {
-                ++cellStart[c];
-                ++total;
+        // The strays listed without a branch (a call in the loop would keep its pointers in
+        // memory), and not at all by a lone thread, whose range holds every cell.
+        const auto count = [&](auto listStrays) {
+            for (std::size_t k = firstPoint; k < lastPoint; ++k) {
+                const std::uint32_t c = cellOf[k];
+                const bool own = inRange(c);
+                if (own) {
+                    ++cellStart[c];
+                    ++total;
+                }
+                if constexpr (listStrays) {
+                    stray[strayCount] = static_cast<std::uint32_t>(k);
+                    strayCount += !own;
+                }
+            }
+        };
+        if (team > 1)
+            count(std::true_type{});
+        else
+            count(std::false_type{});
+        strayCountOfThread_[thread] = strayCount;
+#pragma omp barrier
+        for (std::size_t t = 0; t < team; ++t) {
+            if (t == thread) continue;
+            for (std::size_t s = 0; s < strayCountOfThread_[t]; ++s) {
+                const std::uint32_t k = straysOfThread_[t][s];
+                const std::uint32_t c = cellOf[k];
+                if (inRange(c)) {
+                    ++cellStart[c];
+                    ++total;
+                }
             }
         }
         threadTotals_[thread] = total;
@@ -144,15 +182,20 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         std::uint32_t* const sortedCell = sortedCell_.data();
         Vec<D>* const sortedPosition = sortedPosition_.data();
         const Vec<D>* const from = points.data() + begin;
-        for (std::size_t k = n; k-- > 0;) {
+        const auto place = [&](std::size_t k) {
             const std::uint32_t c = cellOf[k];
-            if (c >= firstCell && c < lastCell) {
-                const std::uint32_t place = --cellStart[c];
-                sorted[place] = static_cast<std::uint32_t>(begin + k);
-                sortedPosition[place] = from[k];
-                sortedCell[place] = c;
-            }
-        }
+            if (!inRange(c)) return;
+            const std::uint32_t at = --cellStart[c];
+            sorted[at] = static_cast<std::uint32_t>(begin + k);
+            sortedPosition[at] = from[k];
+            sortedCell[at] = c;
+        };
+        const auto placeStraysOf = [&](std::size_t t) {
+            for (std::size_t s = strayCountOfThread_[t]; s-- > 0;) place(straysOfThread_[t][s]);
+        };
+        for (std::size_t t = team; t-- > thread + 1;) placeStraysOf(t);
+        for (std::size_t k = lastPoint; k-- > firstPoint;) place(k);
+        for (std::size_t t = thread; t-- > 0;) placeStraysOf(t);
     }
     cellStart_[cells] = static_cast<std::uint32_t>(n);
     if (!pointNear_.empty()) markCellsNear();

@@ -190,8 +190,10 @@ private:
     std::vector<std::uint32_t> sortedCell_;             // cell of each place
     std::vector<std::uint8_t> pointNear_;               // per cell, when kept: 1 if a point lies in its stencil
     // Scratch of build, kept so as not to allocate it again every step.
-    std::vector<std::uint32_t> cellOf_;           // cell of each point
-    std::vector<std::uint32_t> threadTotals_;     // per thread: the points in its range of cells
+    std::vector<std::uint32_t> cellOf_;                       // cell of each point
+    std::vector<std::uint32_t> threadTotals_;                 // per thread: the points in its range of cells
+    std::vector<std::vector<std::uint32_t>> straysOfThread_;  // per thread: points of its block in others' cells
+    std::vector<std::size_t> strayCountOfThread_;
     std::vector<std::size_t> firstCellOfThread_;  // per thread, and the cell count: where its range of cells starts
 };
 

@@ -69,9 +69,9 @@ TEST(CellLinkedList, CellOrderIsAPermutationGroupedByCell) {
 }
 
 TEST(CellLinkedList, OrderIsTheStableSortsWhateverTheNumberOfThreads) {
-    // Crowded cells beside empty ones, and only points [100, 1950) listed; built twice, the
-    // second time with the points moved, so that the threads' ranges of cells come from the
-    // first build's places.
+    // Crowded cells beside empty ones, and only points [100, 1950) listed (in no cell order: most
+    // of a thread's block are strays in other threads' cells); built twice, the second time with
+    // the points moved, so that the threads' ranges of cells come from the first build's places.
     std::mt19937 random(11);
     std::normal_distribution<double> coordinate(0.3, 0.1);
     std::vector<sph::Vec<2>> points(2000);
