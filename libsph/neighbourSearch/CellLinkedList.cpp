@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 namespace sph {
 
@@ -135,28 +136,27 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         std::vector<std::uint32_t>& strays = straysOfThread_[thread];
         if (team > 1 && strays.size() < lastPoint - firstPoint) strays.resize(lastPoint - firstPoint);  // never shrunk: no zeroing each build
         std::uint32_t* const stray = strays.data();
-        std::size_t strayCount = 0;
-        std::uint32_t total = 0;
-        // The strays listed without a branch (a call in the loop would keep its pointers in
-        // memory), and not at all by a lone thread, whose range holds every cell.
-        const auto count = [&](auto listStrays) {
+        // The strays listed without a branch, and not at all by a lone thread, whose range holds
+        // every cell. The counts are the lambda's own: through a reference, a store to a cell's
+        // count (the same type) could change them, and they would live in memory.
+        const auto countOwn = [cellOf, cellStart, stray, firstPoint, lastPoint, inRange](auto listStrays) {
+            std::uint32_t own = 0;
+            std::size_t strayCount = 0;
             for (std::size_t k = firstPoint; k < lastPoint; ++k) {
                 const std::uint32_t c = cellOf[k];
-                const bool own = inRange(c);
-                if (own) {
+                const bool inOwnRange = inRange(c);
+                if (inOwnRange) {
                     ++cellStart[c];
-                    ++total;
+                    ++own;
                 }
                 if constexpr (listStrays) {
                     stray[strayCount] = static_cast<std::uint32_t>(k);
-                    strayCount += !own;
+                    strayCount += !inOwnRange;
                 }
             }
+            return std::pair(own, strayCount);
         };
-        if (team > 1)
-            count(std::true_type{});
-        else
-            count(std::false_type{});
+        auto [total, strayCount] = team > 1 ? countOwn(std::true_type{}) : countOwn(std::false_type{});
         strayCountOfThread_[thread] = strayCount;
 #pragma omp barrier
         for (std::size_t t = 0; t < team; ++t) {
@@ -182,7 +182,7 @@ void CellLinkedList<D>::build(const std::vector<Vec<D>>& points, std::size_t beg
         std::uint32_t* const sortedCell = sortedCell_.data();
         Vec<D>* const sortedPosition = sortedPosition_.data();
         const Vec<D>* const from = points.data() + begin;
-        const auto place = [&](std::size_t k) {
+        const auto place = [cellOf, cellStart, sorted, sortedCell, sortedPosition, from, begin, inRange](std::size_t k) {
             const std::uint32_t c = cellOf[k];
             if (!inRange(c)) return;
             const std::uint32_t at = --cellStart[c];
