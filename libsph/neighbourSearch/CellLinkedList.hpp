@@ -193,8 +193,8 @@ private:
     std::vector<std::uint32_t> cellOf_;                       // cell of each point
     std::vector<std::uint32_t> threadTotals_;                 // per thread: the points in its range of cells
     std::vector<std::vector<std::uint32_t>> straysOfThread_;  // per thread: points of its block in others' cells
-    std::vector<std::size_t> strayCountOfThread_;
-    std::vector<std::size_t> firstCellOfThread_;  // per thread, and the cell count: where its range of cells starts
+    std::vector<std::size_t> strayCountOfThread_;             // per thread: how many of its list are strays (never shrunk)
+    std::vector<std::size_t> firstCellOfThread_;              // per thread, and the cell count: where its range of cells starts
 };
 
 }  // namespace sph
