@@ -22,11 +22,20 @@ def tree(top):
     return found
 
 
+def copy_as_shipped(shipped, case, files):
+    """The case as in git, whatever an earlier Allrun left beside it (the README's first command
+    runs damBreak2D): its dictionaries and the named files."""
+    for part in ("system", "constant"):
+        shutil.copytree(os.path.join(shipped, part), os.path.join(case, part))
+    for name in files:
+        shutil.copy2(os.path.join(shipped, name), case)
+
+
 class CleanCase(unittest.TestCase):
     def test_allclean_keeps_what_the_user_wrote(self):
         with tempfile.TemporaryDirectory() as work:
             case = os.path.join(work, "damBreak")
-            shutil.copytree(CASE, case)
+            copy_as_shipped(CASE, case, ("Allrun", "Allclean", "README.md", "answers", "compareFront.py", "martinMoyce1952Front.csv"))
             particles = os.path.join(case, "system", "generateParticlesDict")
             with open(particles) as f:
                 text = f.read()
@@ -59,11 +68,7 @@ class CleanCase(unittest.TestCase):
         # postProcessing/<name>/<t0>/<time>/ and variants/: Allclean leaves the case as shipped.
         with tempfile.TemporaryDirectory() as work:
             case = os.path.join(work, "tank")
-            shipped = os.path.join(ROOT, "cases", "hydrostaticTank3D")  # as in git, whatever an earlier Allrun left
-            for part in ("system", "constant"):
-                shutil.copytree(os.path.join(shipped, part), os.path.join(case, part))
-            for name in ("Allrun", "Allclean", "checkStillWater.py", "README.md"):
-                shutil.copy2(os.path.join(shipped, name), case)
+            copy_as_shipped(os.path.join(ROOT, "cases", "hydrostaticTank3D"), case, ("Allrun", "Allclean", "checkStillWater.py", "README.md"))
             edits = [("system/generateParticlesDict", "spacing     0.04;", "spacing     0.05;"),
                      ("system/controlDict", "endTime         4;", "endTime         0.1;")]
             for path, old, new in edits:
