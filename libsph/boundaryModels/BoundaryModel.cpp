@@ -16,10 +16,10 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
     registry.add("dummyParticles",
                  {"fixed dummy particles, pressure extrapolated from the fluid",
                   "Adami, Hu & Adams, J. Comput. Phys. 231 (2012) 7057",
-                  {{"noSlip", "yes", "viscous wall velocity 2 v_w - v~ (yes) or v~ (no, free slip)"},
+                  {{"noSlip", "yes (no with artificial viscosity)", "viscous wall velocity 2 v_w - v~ (yes) or v~ (no, free slip)"},
                    {"clampNegativePressure", "yes", "wall pressure never below the background pressure"}}},
-                 [](const Dictionary& dict, const ModelContext&) -> std::unique_ptr<BoundaryModel<D>> {
-                     return std::make_unique<DummyParticlesAdami2012<D>>(dict);
+                 [](const Dictionary& dict, const ModelContext& context) -> std::unique_ptr<BoundaryModel<D>> {
+                     return std::make_unique<DummyParticlesAdami2012<D>>(dict, context);
                  });
     registry.add(
         "dynamicBoundary", {"wall particles with continuity density and EOS pressure", "Crespo, Gomez-Gesteira & Dalrymple, CMC 5 (2007) 173", {}},

@@ -334,8 +334,9 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     double h = 0.0;
     Kernel<D> kernel = selectKernel<D>(schemes, dx, h);
     const double support = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
-    const ModelContext context = modelContext(properties, dx, h);
+    ModelContext context = modelContext(properties, dx, h);
     FluidModels<D> models = selectFluidModels<D>(schemes, std::move(kernel), properties, context);
+    context.artificialViscosity = std::holds_alternative<ArtificialViscosityMonaghan1992>(models.viscosity);
 
     setup.patchNames = state.wallHeader.patchNames;
     std::vector<Patch<D>> patches =

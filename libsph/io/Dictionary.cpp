@@ -3,6 +3,8 @@
 #include "core/Spelling.hpp"
 #include "io/DictionaryExpression.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -689,6 +691,11 @@ template std::vector<Vec<3>> Dictionary::getVectorList<3>(const std::string&) co
 void Dictionary::fail(const std::string& keyword, const std::string& message) const {
     const Entry* e = lookup(keyword);
     throw FatalError(e ? e->where() : where_, "keyword '" + keyword + "' in dictionary '" + name_ + "': " + message);
+}
+
+void Dictionary::warn(const std::string& keyword, const std::string& message) const {
+    const Entry* e = lookup(keyword);
+    fmt::print("{}: warning: keyword '{}' in dictionary '{}': {}\n", (e ? e->where() : where_).str(), keyword, name_, message);
 }
 
 double Dictionary::getPositive(const std::string& keyword) const {

@@ -87,6 +87,9 @@ public:
 
     // A FatalError for a value that read correctly but is not acceptable.
     [[noreturn]] void fail(const std::string& keyword, const std::string& message) const;
+    // The same for a value that is accepted but known to give wrong results: printed to stdout
+    // (rank 0's alone in a parallel run) and the run goes on.
+    void warn(const std::string& keyword, const std::string& message) const;
 
     // FatalError listing every entry (recursively) that no look-up has used, each with the
     // keyword a look-up asked for and did not find that its spelling is nearest to, if any is

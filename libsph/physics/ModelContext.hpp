@@ -11,6 +11,9 @@ struct ModelContext {
     double nu;         // kinematic viscosity (0 when the fluid properties give none)
     double stiffness;  // K of the equation of state p - p0 = K ((rho/rho0)^n - 1)
     double exponent;   // n of the same
+    // The fluid's viscosity is artificial (Monaghan's): a wall's viscous velocity then only
+    // damps, and a no-slip wall acts as friction (DummyParticlesAdami2012.hpp).
+    bool artificialViscosity = false;
 };
 
 }  // namespace sph

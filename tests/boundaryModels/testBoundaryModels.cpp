@@ -55,6 +55,23 @@ FluidSystem<2> hydrostaticColumn(std::unique_ptr<BoundaryModel<2>> model, const 
                           Vec<2>(0.0, -g), 0.0);
 }
 
+// Dummy particles from a patch entry, in a case whose viscosity is artificial or not.
+std::unique_ptr<BoundaryModel<2>> dummyParticles(const std::string& entry, bool artificialViscosity = false) {
+    ModelContext context{dx, 1.3 * dx, 20.0, rho0, 0.0, rho0 * 400.0 / 7.0, 7.0};
+    context.artificialViscosity = artificialViscosity;
+    return std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString(entry, "constant/boundaryProperties"), context);
+}
+
+// The viscous velocity of the first wall layer under the column sliding along it at speed U.
+Vec<2> viscousWallVelocity(std::unique_ptr<BoundaryModel<2>> model) {
+    constexpr double U = 0.5;
+    auto system = hydrostaticColumn(std::move(model));
+    system.walls.add(fields::viscousVelocity, Vec<2>::Zero(), false);
+    for (auto& v : system.fluid[fields::velocity]) v = Vec<2>(U, 0.0);
+    system.evaluateRates(0.0);
+    return system.walls[fields::viscousVelocity][10] / U;  // a first-layer particle mid-floor
+}
+
 // Wall density rates under a disordered block of fluid with random velocities, three wall
 // layers with their own velocities, computed with two threads, against the direct sum over
 // every fluid particle: in 3D (pairs in vector lanes) and in 2D across a periodic side.
@@ -129,7 +146,7 @@ void compareWallDensityRatesWithDirectSum(bool periodicX) {
 }  // namespace
 
 TEST(DummyParticlesAdami2012, ExtrapolatesTheHydrostaticPressureLinearlyIntoTheWall) {
-    auto system = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
+    auto system = hydrostaticColumn(dummyParticles(""));
     system.evaluateRates(0.0);
     const auto& p = system.walls[fields::pressure];
     // Away from the side edges the fluid pressure is exactly linear, so the extrapolation is
@@ -148,9 +165,9 @@ TEST(DummyParticlesAdami2012, ExtrapolatesTheHydrostaticPressureLinearlyIntoTheW
 TEST(DummyParticlesAdami2012, WallAccelerationEntersTheExtrapolation) {
     // Walls falling with gravity (a_w = g): the hydrostatic term vanishes and the wall pressure
     // is the kernel-weighted mean of the fluid pressure around it, below the linear extrapolation.
-    auto falling = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")), Vec<2>(0.0, -g));
+    auto falling = hydrostaticColumn(dummyParticles(""), Vec<2>(0.0, -g));
     falling.evaluateRates(0.0);
-    auto fixed = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
+    auto fixed = hydrostaticColumn(dummyParticles(""));
     fixed.evaluateRates(0.0);
     const std::size_t w = 10;  // first layer, middle
     const auto& pFalling = falling.walls[fields::pressure];
@@ -171,7 +188,7 @@ TEST(DummyParticlesAdami2012, WallAccelerationEntersTheExtrapolation) {
 }
 
 TEST(DummyParticlesAdami2012, HoldsTheColumnAgainstGravity) {
-    auto system = hydrostaticColumn(std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("", "tank")));
+    auto system = hydrostaticColumn(dummyParticles(""));
     system.evaluateRates(0.0);
     // The walls must complete the support as if the fluid continued below: the bottom row then
     // feels what a row with full fluid support feels (the bulk scheme's own residual, here
@@ -180,6 +197,28 @@ TEST(DummyParticlesAdami2012, HoldsTheColumnAgainstGravity) {
     const auto& a = system.fluid[fields::acceleration];
     const std::size_t nx = 20, bulkRow = 4;  // 4 dx up: beyond the wall's reach (support 2.6 dx)
     for (std::size_t i = 5; i < 15; ++i) EXPECT_NEAR(a[i].y(), a[bulkRow * nx + i].y(), 0.01 * g) << "column " << i;
+}
+
+// v~ is the Shepard mean of a uniform velocity, U itself: free slip passes it on, no slip mirrors
+// it about the (fixed) wall's velocity, 2 * 0 - U.
+TEST(DummyParticlesAdami2012, NoSlipMirrorsTheFluidVelocityFreeSlipPassesItOn) {
+    EXPECT_NEAR((viscousWallVelocity(dummyParticles("noSlip yes;")) - Vec<2>(-1.0, 0.0)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((viscousWallVelocity(dummyParticles("noSlip no;")) - Vec<2>(1.0, 0.0)).norm(), 0.0, 1e-12);
+}
+
+// The default follows the viscosity: no slip with a physical one, free slip with artificial
+// viscosity, where a mirrored velocity brakes impacts; asking for no slip there is kept and warned of.
+TEST(DummyParticlesAdami2012, FreeSlipByDefaultOnlyWithArtificialViscosity) {
+    EXPECT_NEAR((viscousWallVelocity(dummyParticles("")) - Vec<2>(-1.0, 0.0)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((viscousWallVelocity(dummyParticles("", true)) - Vec<2>(1.0, 0.0)).norm(), 0.0, 1e-12);
+    testing::internal::CaptureStdout();
+    const auto quiet = dummyParticles("noSlip no;", true);
+    const auto asked = dummyParticles("clampNegativePressure yes;\nnoSlip yes;", true);
+    const std::string printed = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(printed.rfind("constant/boundaryProperties:2:1: warning: keyword 'noSlip'", 0), 0u) << printed;
+    EXPECT_NE(printed.find("noSlip no, the default with artificial viscosity"), std::string::npos) << printed;
+    EXPECT_EQ(printed.find('\n'), printed.size() - 1) << "one warning: " << printed;
+    EXPECT_NEAR((viscousWallVelocity(dummyParticles("noSlip yes;", true)) - Vec<2>(-1.0, 0.0)).norm(), 0.0, 1e-12);
 }
 
 TEST(DynamicBoundaryCrespo2007, WallDensityRateFromApproachingFluid) {

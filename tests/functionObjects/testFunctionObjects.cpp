@@ -101,7 +101,7 @@ std::unique_ptr<FluidSystem<2>> makeBlockOnAFloor(std::unique_ptr<BoundaryModel<
 }
 
 std::unique_ptr<BoundaryModel<2>> dummyParticles() {
-    return std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("noSlip no;", "floor"));
+    return std::make_unique<DummyParticlesAdami2012<2>>(Dictionary::fromString("noSlip no;", "floor"), ModelContext{});
 }
 
 FunctionObjectContext<2> contextFor(const std::filesystem::path& dir, const FluidSystem<2>& system) {

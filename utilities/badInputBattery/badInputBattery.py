@@ -101,12 +101,12 @@ add("unknown name", "equation of state `tate`", [edit(FLUID, "type            ta
 add("unknown name", "boundary model `ghostParticles`", [edit(BOUNDARY, "dummyParticles", "ghostParticles")],
     "unknown boundary model 'ghostParticles'; valid boundary model names are:")
 add("unknown name", "repulsion partner `springs`",
-    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip yes; }", "tank { type deficiencyCorrection; repulsion { type springs; } }"),
+    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; repulsion { type springs; } }"),
      edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "springs")
 add("unknown name", "calibration `wallPresure`",
-    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip yes; }", "tank { type deficiencyCorrection; calibration wallPresure; }"),
+    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; calibration wallPresure; }"),
      edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "wallPresure")
-add("unknown name", "motion `wobble`", [edit(BOUNDARY, "noSlip yes; }", "noSlip yes; motion { type wobble; } }")], "wobble")
+add("unknown name", "motion `wobble`", [edit(BOUNDARY, "noSlip no; }", "noSlip no; motion { type wobble; } }")], "wobble")
 add("unknown name", "function object `surgeFrnt`", [edit(CONTROL, "type            surgeFront;", "type            surgeFrnt;")], "surgeFrnt")
 add("unknown name", "wall patch type `cylinder`", [edit(PARTICLES, "type boxWalls;", "type cylinder;")], "unknown wall patch type 'cylinder'; valid wall patch type names are:")
 add("unknown name", "fluid region type `sphere`", [edit(PARTICLES, "column  { type box;", "column  { type sphere;")],
@@ -133,7 +133,7 @@ add("missing", "`spacing` absent", [edit(PARTICLES, "spacing     0.0028575;", ""
 add("missing", "`dimension` absent", [edit(PARTICLES, "dimension   2;", "")], "keyword 'dimension' is missing")
 add("missing", "`domain` absent", [edit(PARTICLES, "domain      { min (-0.03 -0.03); max (0.43 0.2); }", "")], "keyword 'domain' is missing")
 add("missing", "`fluid` absent", [edit(PARTICLES, "fluid\n{", "liquid\n{")], "keyword 'fluid' is missing")
-add("missing", "no model for a patch", [edit(BOUNDARY, "tank        { type dummyParticles; noSlip yes; }", "")], "tank")
+add("missing", "no model for a patch", [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "")], "tank")
 add("missing", "no speed of sound", [edit(FLUID, "c0FromHeight    { coefficient 10; height 0.1143; }   // 10 sqrt(g 2a)", "")], "c0")
 add("missing", "`system/sphSchemes` deleted", [action(lambda d: os.remove(os.path.join(d, SCHEMES)))],
     "cannot open dictionary '<case>/system/sphSchemes': file not found", tools=("wcsph",))
@@ -149,7 +149,7 @@ add("missing", "a case directory that does not exist", [], "does not exist", too
 add("wrong type", "`writeInterval often`", [edit(CONTROL, "writeInterval   0.01;", "writeInterval   often;")], "expected a number, found word 'often'")
 add("wrong type", "`courant (0.2)`", [edit(TIME, "courant     0.2;", "courant     (0.2);")], "keyword 'courant' in dictionary 'timeIntegration': expected a number")
 add("wrong type", "`hdx` a list", [edit(SCHEMES, "hdx 1.3;", "hdx (1.3);")], "keyword 'hdx'")
-add("wrong type", "`noSlip maybe`", [edit(BOUNDARY, "noSlip yes;", "noSlip maybe;")], "expected a switch (yes/no, true/false, on/off), found word 'maybe'")
+add("wrong type", "`noSlip maybe`", [edit(BOUNDARY, "noSlip no;", "noSlip maybe;")], "expected a switch (yes/no, true/false, on/off), found word 'maybe'")
 add("wrong type", "`gravity` a number", [edit(FLUID, "gravity     (0 -9.81);", "gravity     -9.81;")], "keyword 'gravity'")
 add("wrong type", "`gravity` with 3 components in 2D", [edit(FLUID, "gravity     (0 -9.81);", "gravity     (0 -9.81 0);")],
     "expected a vector of 2 components for a 2D case, found 3")
@@ -195,15 +195,15 @@ add("inconsistent models", "`velocityBlock` with artificial viscosity", [edit(TI
     "velocityBlock is exact only for a viscosity linear in velocity (laminar)")
 add("inconsistent models", "a free body with `verlet`", [edit(TIME, "type symplectic;", "type verlet;")],
     "only the symplectic integrator advances; found verlet", case="sinkingCylinder2D")
-add("inconsistent models", "a wall-force model on 3 layers", [edit(BOUNDARY, "tank        { type dummyParticles; noSlip yes; }", "tank { type deficiencyCorrection; }")],
+add("inconsistent models", "a wall-force model on 3 layers", [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; }")],
     "acts from one layer of wall particles on the wall surface, but patch 'tank' has 3 layers")
 add("inconsistent models", "dummy particles on one layer", [edit(PARTICLES, "layers 3;", "layers 1;")], "needs at least")
 add("inconsistent models", "`sample` with the wallPressure calibration",
-    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip yes; }", "tank { type deficiencyCorrection; sample 6; }"),
+    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; sample 6; }"),
      edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "sample")
 add("inconsistent models", "a motion table shorter than the run",
     [edit("motion.csv", None, "# t x y\n0 0 0\n0.001 0 0\n"),
-     edit(BOUNDARY, "noSlip yes; }", "noSlip yes; motion { type table; file \"motion.csv\"; } }")], "covers t from 0 to 0.001, but the run goes from 0 to 0.004")
+     edit(BOUNDARY, "noSlip no; }", "noSlip no; motion { type table; file \"motion.csv\"; } }")], "covers t from 0 to 0.001, but the run goes from 0 to 0.004")
 
 # Inconsistent geometry.
 add("inconsistent geometry", "fluid outside the domain", [edit(PARTICLES, "max ($a 0.1143); }", "max ($a 0.2286); }")],
