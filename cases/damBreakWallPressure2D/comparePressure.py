@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Compares the downstream-wall pressure of damBreakWallPressure2D (and its variants) with the
-delta-SPH curves of De Courcy et al. (2024) at sensors P1-P4 and with Buchner's (2002)
-experiment at y = 0.2 H (sensor B; the jax-sph digitisation, and the PySPH one on a line of its own).
+delta-SPH curves of De Courcy et al. (2024) at sensors P1-P4, with Buchner's (2002) experiment
+at y = 0.2 H (sensor B; the jax-sph digitisation, and the PySPH one in a block of its own) and
+with Lobovsky et al.'s (2014) experiment at P1, P3 and P4 (a third block).
 
 Reads <case>/postProcessing/sensors/<t0>/p.dat (the probes dx/2 in front of the wall) for each
 case directory given (default: this one), or with --wall the wallPressure sensors on the wall
@@ -22,6 +23,9 @@ H, G, RHO = 0.6, 9.81, 1000.0
 SENSORS = (("P1", "deCourcy2024P1.csv"), ("P2", "deCourcy2024P2.csv"), ("P3", "deCourcy2024P3.csv"), ("P4", "deCourcy2024P4.csv"),
            ("B", "buchner2002JaxSPH.csv"))
 SECOND_DIGITISATION = ("B", "buchner2002PySPH.csv")
+# Lobovsky et al.'s (2014) experiment: the same dam break at H = 0.3 m, its sensors 1, 3 and 4 at
+# this case's P1, P3 and P4 (in units of H).
+EXPERIMENT = (("P1", "lobovsky2014Sensor1.csv"), ("P3", "lobovsky2014Sensor3.csv"), ("P4", "lobovsky2014Sensor4.csv"))
 WINDOWS = [(2.0 + 0.1 * k, 2.1 + 0.1 * k) for k in range(50)]
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -75,6 +79,10 @@ def main():
     lines = ["# case, RMS of the Delta T = 0.1 window means against De Courcy et al. (2024) at P1 P2 P3 P4 and Buchner (2002, "
              "jax-sph's digitisation) at B, most fluid particles behind the wall at any step"]
     lines_second = ["# case, the same at B against PySPH's digitisation of Buchner (2002)"]
+    experiment = {name: read_reference(source) for name, source in EXPERIMENT}
+    experiment_means = {name: window_means([t for t, _ in rows], [p for _, p in rows]) for name, rows in experiment.items()}
+    lines_experiment = ["# case, the same at P1 P3 P4 against Lobovsky et al.'s (2014) experiment (the median of its repeated runs)"]
+    column = {name: k for k, (name, _) in enumerate(SENSORS)}
     curves = {}
     for case in cases:
         times, values = read_sensors(case, wall)
@@ -82,8 +90,10 @@ def main():
         name = os.path.basename(os.path.abspath(case))
         curves[name] = (times, values)
         lines.append("%s %s %d" % (name, " ".join("%.3f" % e for e in errors), most_behind_wall(case)))
-        lines_second.append("%s %.3f" % (name, rms_against(times, values[len(SENSORS) - 1], second_means)))
-    lines += lines_second
+        lines_second.append("%s %.3f" % (name, rms_against(times, values[column["B"]], second_means)))
+        lines_experiment.append("%s %s" % (name, " ".join("%.3f" % rms_against(times, values[column[sensor]], experiment_means[sensor])
+                                                          for sensor, _ in EXPERIMENT)))
+    lines += lines_second + lines_experiment
     with open(os.path.join(cases[0], "wallPressureError.txt" if wall else "pressureError.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -101,6 +111,9 @@ def main():
             axes[k].plot([t for t, _ in second], [p for _, p in second], "kx", ms=3, label="Buchner 2002 (PySPH digitisation)")
         else:
             axes[k].plot([t for t, _ in rows], [p for _, p in rows], "k-", lw=0.8, label="De Courcy et al. 2024")
+            if sensor in experiment:
+                measured = experiment[sensor]
+                axes[k].plot([t for t, _ in measured], [p for _, p in measured], "k:", lw=0.8, label="Lobovsky et al. 2014 (experiment)")
         for name, (times, values) in curves.items():
             axes[k].plot(times, values[k], lw=0.6, label=name)
         axes[k].set_ylabel("%s: p / (rho g H)" % sensor)
