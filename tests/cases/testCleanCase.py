@@ -35,7 +35,8 @@ class CleanCase(unittest.TestCase):
     def test_allclean_keeps_what_the_user_wrote(self):
         with tempfile.TemporaryDirectory() as work:
             case = os.path.join(work, "damBreak")
-            copy_as_shipped(CASE, case, ("Allrun", "Allclean", "README.md", "answers", "compareFront.py", "martinMoyce1952Front.csv"))
+            copy_as_shipped(CASE, case, ("Allrun", "Allclean", "README.md", "answers", "compareFront.py", "martinMoyce1952Front.csv",
+                                          "koshizukaOka1996Front.csv"))
             particles = os.path.join(case, "system", "generateParticlesDict")
             with open(particles) as f:
                 text = f.read()
