@@ -135,7 +135,7 @@ TEST(Probes, InterpolateALinearFieldExactlyAtASymmetricPointAndReadZeroWhenDry) 
     for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 100.0 + 50.0 * system->fluid.position[i].x() + 20.0 * system->fluid.position[i].y();
     const Dictionary dict = Dictionary::fromString("type probes; fields (p rho Ux); points ((0.5 0.5) (0.3 0.7) (1.09 1.09));", "probes");
     Probes<2> probes(dict, contextFor(dir, *system));
-    const auto values = probes.sample(system->view());
+    const auto values = probes.sample(system->view(), 0.0);
     // A lattice point of the block: the kernel weights are symmetric, so a linear field is exact.
     EXPECT_NEAR(values[0][0], 100.0 + 25.0 + 10.0, 1e-9);
     EXPECT_NEAR(values[0][1], 100.0 + 15.0 + 14.0, 1e-9);
@@ -145,6 +145,22 @@ TEST(Probes, InterpolateALinearFieldExactlyAtASymmetricPointAndReadZeroWhenDry) 
     const auto [header, row] = headerAndFirstRow(dir / "postProcessing/object/0/p.dat");
     EXPECT_EQ(header, "# time p(0.5 0.5) p(0.3 0.7) p(1.09 1.09)");
     EXPECT_EQ(row, "0.5 135 129 0");
+}
+
+// A probe on a patch that translates at 0.3 m/s reads the linear field where the patch has
+// carried it; the same probe in the lab frame stays put.
+TEST(Probes, OnAMovingPatchFollowIt) {
+    const auto dir = freshDirectory();
+    auto system = makeBlock(std::make_unique<Translation<2>>(Dictionary::fromString("velocity (0.3 0);", "motion")));
+    auto& p = system->fluid[fields::pressure];
+    for (std::size_t i = 0; i < system->fluid.size(); ++i) p[i] = 100.0 + 50.0 * system->fluid.position[i].x() + 20.0 * system->fluid.position[i].y();
+    Probes<2> moving(Dictionary::fromString("type probes; fields (p); points ((0.2 0.5)); patch tank;", "probes"), contextFor(dir, *system));
+    Probes<2> fixed(Dictionary::fromString("type probes; fields (p); points ((0.2 0.5));", "probes"), contextFor(dir, *system));
+    EXPECT_NEAR(moving.sample(system->view(), 1.0)[0][0], 100.0 + 50.0 * 0.5 + 20.0 * 0.5, 1e-9);  // carried to x = 0.5
+    EXPECT_NEAR(fixed.sample(system->view(), 1.0)[0][0], 100.0 + 50.0 * 0.2 + 20.0 * 0.5, 1e-9);
+    EXPECT_NE(moving.describe().find("moving with patch tank"), std::string::npos);
+    EXPECT_THROW(Probes<2>(Dictionary::fromString("type probes; fields (p); points ((0.2 0.5)); patch lid;", "probes"), contextFor(dir, *system)),
+                 FatalError);
 }
 
 TEST(Probes, OutsideTheDomainOrAnUnknownFieldIsAnErrorBeforeTheRun) {
