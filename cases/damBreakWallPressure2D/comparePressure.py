@@ -22,7 +22,7 @@ H, G, RHO = 0.6, 9.81, 1000.0
 # Sensor name and reference file, in the order of the probes' columns.
 SENSORS = (("P1", "deCourcy2024P1.csv"), ("P2", "deCourcy2024P2.csv"), ("P3", "deCourcy2024P3.csv"), ("P4", "deCourcy2024P4.csv"),
            ("B", "buchner2002JaxSPH.csv"))
-SECOND_DIGITISATION = ("B", "buchner2002PySPH.csv")
+SECOND_DIGITISATION = "buchner2002PySPH.csv"  # of sensor B
 # Lobovsky et al.'s (2014) experiment: the same dam break at H = 0.3 m, its sensors 1, 3 and 4 at
 # this case's P1, P3 and P4 (in units of H).
 EXPERIMENT = (("P1", "lobovsky2014Sensor1.csv"), ("P3", "lobovsky2014Sensor3.csv"), ("P4", "lobovsky2014Sensor4.csv"))
@@ -63,6 +63,10 @@ def most_behind_wall(case):
     return max(counts) if counts else 0
 
 
+def means_of(rows):
+    return window_means([t for t, _ in rows], [p for _, p in rows])
+
+
 def rms_against(times, values, reference_means):
     means = window_means(times, values)
     pairs = [(m, r) for m, r in zip(means, reference_means) if m is not None and r is not None]
@@ -73,14 +77,14 @@ def main():
     wall = "--wall" in sys.argv
     cases = [a for a in sys.argv[1:] if a != "--wall"] or [HERE]
     references = {name: read_reference(source) for name, source in SENSORS}
-    second = read_reference(SECOND_DIGITISATION[1])
-    reference_means = {name: window_means([t for t, _ in rows], [p for _, p in rows]) for name, rows in references.items()}
-    second_means = window_means([t for t, _ in second], [p for _, p in second])
+    second = read_reference(SECOND_DIGITISATION)
+    reference_means = {name: means_of(rows) for name, rows in references.items()}
+    second_means = means_of(second)
     lines = ["# case, RMS of the Delta T = 0.1 window means against De Courcy et al. (2024) at P1 P2 P3 P4 and Buchner (2002, "
              "jax-sph's digitisation) at B, most fluid particles behind the wall at any step"]
     lines_second = ["# case, the same at B against PySPH's digitisation of Buchner (2002)"]
     experiment = {name: read_reference(source) for name, source in EXPERIMENT}
-    experiment_means = {name: window_means([t for t, _ in rows], [p for _, p in rows]) for name, rows in experiment.items()}
+    experiment_means = {name: means_of(rows) for name, rows in experiment.items()}
     lines_experiment = ["# case, the same at P1 P3 P4 against Lobovsky et al.'s (2014) experiment (the median of its repeated runs)"]
     column = {name: k for k, (name, _) in enumerate(SENSORS)}
     curves = {}
