@@ -1,7 +1,8 @@
 // The particle-shifting family: after every step, fluid particles move by dt times a shifting
-// velocity that evens out their spacing (physics/ParticleShiftingPass.tpp), their velocity and
-// density unchanged. Optional: a case without `particleShifting` in system/sphSchemes shifts
-// nothing and pays nothing.
+// velocity that evens out their spacing (physics/ParticleShiftingPass.tpp), their velocity
+// unchanged and, with continuity density, their density by the shift's Taylor term (the
+// renormalised density gradient). Optional: a case without `particleShifting` in
+// system/sphSchemes shifts nothing and pays nothing.
 #pragma once
 
 #include "core/Registry.hpp"
