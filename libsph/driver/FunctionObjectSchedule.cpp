@@ -12,7 +12,8 @@ namespace sph {
 
 template <int D>
 FunctionObjectSchedule<D>::FunctionObjectSchedule(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime,
-                                                  double rho0, const FluidSystemView<D>& system, const Reductions& reductions)
+                                                  double rho0, const FluidSystemView<D>& system,
+                                                  const std::function<void(std::size_t)>& recordPatchLoad, const Reductions& reductions)
     : reductions_(reductions) {
     const Dictionary* functions = controlDict.findSubDict("functions");
     if (!functions) return;
@@ -20,8 +21,8 @@ FunctionObjectSchedule<D>::FunctionObjectSchedule(const Dictionary& controlDict,
     for (const std::string& name : functions->keywords())
         reductions.together([&] {
             const Dictionary& dict = functions->subDict(name);
-            const FunctionObjectContext<D> context{caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system,
-                                                   reductions};
+            const FunctionObjectContext<D> context{
+                caseDirectory, caseDirectory / "postProcessing" / name / timeName(startTime), rho0, system, reductions, recordPatchLoad};
             auto object = selectByType(registry, dict, dict, context);
             const double interval = dict.getNonNegativeOrDefault("executeInterval", 0.0);
             fmt::print("Selecting function object {} ({})\n", name, object->describe());

@@ -26,8 +26,10 @@ public:
     // Selects each entry of `functions` by its type; none when controlDict has no `functions`.
     // In a decomposed run every rank selects them, on its share (`system`), and they combine
     // over the ranks by `reductions`: each construction and execution is collective.
+    // recordPatchLoad: FunctionObjectContext's.
     FunctionObjectSchedule(const Dictionary& controlDict, const std::filesystem::path& caseDirectory, double startTime, double rho0,
-                           const FluidSystemView<D>& system, const Reductions& reductions = Reductions::oneProcess());
+                           const FluidSystemView<D>& system, const std::function<void(std::size_t)>& recordPatchLoad,
+                           const Reductions& reductions = Reductions::oneProcess());
 
     // Executes each object at the first step at or after each multiple of its interval, or
     // every object when `force` (the start, the end, a stop).

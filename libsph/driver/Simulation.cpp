@@ -143,7 +143,8 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
     for (const Patch<D>& patch : system.patches)
         if (patch.motion) patch.motion->checkCovers(startTime, controls.endTime);
-    FunctionObjectSchedule<D> functionObjects(controlDict, caseDirectory, startTime, setup.rho0, system.view());
+    FunctionObjectSchedule<D> functionObjects(controlDict, caseDirectory, startTime, setup.rho0, system.view(),
+                                              [&system](std::size_t patch) { system.patches[patch].recordsLoad = true; });
     controlDict.checkUnused();
     for (const Dictionary& dict : setup.dictionaries) dict.checkUnused();
 

@@ -15,6 +15,7 @@
 #include "physics/FluidSystemView.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct FunctionObjectContext {
     double rho0;
     FluidSystemView<D> system;  // the domain, gravity and models, for checks before the first step
     const Reductions& reductions = Reductions::oneProcess();
+    // Has the system record a wall-force patch's load at each evaluation (Patch::load); empty
+    // where no system evaluates the view's rates.
+    std::function<void(std::size_t patch)> recordPatchLoad = {};
 
     // The object's time series, or one that writes nothing where this process does not write.
     TimeSeriesFile series(const std::string& file, const std::string& header) const {

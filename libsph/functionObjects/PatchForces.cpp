@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace sph {
 
@@ -19,10 +20,10 @@ PatchForces<D>::PatchForces(const Dictionary& dict, const FunctionObjectContext<
     std::string header = "# time";
     for (const std::string& name : names_) {
         const auto k = static_cast<std::size_t>(&patchByName(dict, "patches", name, context.system) - patches.data());
-        if (!patches[k].model->actsThroughWallParticles())
-            dict.fail("patches",
-                      fmt::format("patch '{}' is a wall-force patch ({}); forces reports wall-particle patches (a free body's loads: bodyMotion)",
-                                  name, patches[k].model->describe()));
+        if (!patches[k].model->actsThroughWallParticles()) {
+            if (!context.recordPatchLoad) throw std::logic_error("forces on a wall-force patch needs a system that records its load");
+            context.recordPatchLoad(k);
+        }
         patches_.push_back(k);
         for (int d = 0; d < D; ++d) header += fmt::format(" {}_F{}", name, "xyz"[d]);
     }
@@ -50,6 +51,10 @@ std::vector<Vec<D>> PatchForces<D>::forces(const FluidSystemView<D>& system) con
         [&](const auto& kernel, const auto& viscosity) {
             for (std::size_t k = 0; k < patches_.size(); ++k) {
                 const Patch<D>& patch = system.patches[patches_[k]];
+                if (!patch.model->actsThroughWallParticles()) {  // recorded by the last evaluation
+                    for (int d = 0; d < D; ++d) totals[k * D + static_cast<std::size_t>(d)] = patch.load[static_cast<std::size_t>(d)];
+                    continue;
+                }
                 for (std::size_t w = patch.begin; w < patch.end; ++w) {
                     if (!system.ownsWall(w)) continue;
                     Vec<D> force = Vec<D>::Zero();

@@ -334,6 +334,7 @@ void DistributedSystem<D>::refreshWithinEvaluations() {
     const bool copiesRatesRead =
         std::any_of(system.patches.begin(), system.patches.end(), [](const Patch<D>& patch) { return patch.model->needsUncorrectedAcceleration(); });
     if (!copiesRatesRead) system.ratesWanted = &fluidOwned_;
+    system.ownedFluid = &fluidOwned_;
     shareStateWithSundials();
     system.afterRates = [this] {
         timed([this] {

@@ -317,7 +317,9 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     if (mode == RunMode::RatesOnly) return writeRates(ranks, caseDirectory, setup, shared);
     // Every rank selects the function objects, on its share; they combine over the ranks.
     const ReductionsOverRanks reductions(ranks);
-    FunctionObjectSchedule<D> functionObjects(controlDict, caseDirectory, setup.header.time, setup.rho0, shared.view(), reductions);
+    FunctionObjectSchedule<D> functionObjects(
+        controlDict, caseDirectory, setup.header.time, setup.rho0, shared.view(),
+        [&setup](std::size_t patch) { setup.system->patches[patch].recordsLoad = true; }, reductions);
     together(ranks, [&] { controlDict.checkUnused(); });
     timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, functionObjects, writeCsv, balanceThreshold);
 }

@@ -140,6 +140,9 @@ public:
     // pair loop then skips the pairs of two particles in cells where none is wanted. Null in a
     // serial run: every particle's.
     const std::vector<char>* ratesWanted = nullptr;
+    // Per fluid particle, whether this rank owns it (a patch's recorded load sums the owned
+    // ones'). Null in a serial run: every particle.
+    const std::vector<char>* ownedFluid = nullptr;
 
     const CellLinkedList<D>& fluidCells() const { return fluidCells_; }
     const CellLinkedList<D>& wallCells() const { return wallCells_; }
@@ -153,6 +156,8 @@ private:
     // Whether the last evaluation's force loop took the shifting pairs' sums at the present state.
     bool stateAsShiftingSummed() const;
     void addWallForces(double t);
+    // Patch::load from the fluid's acceleration before and after the patch's wall forces.
+    void recordLoad(Patch<D>& patch, const std::vector<Vec<D>>& accelerationBefore) const;
     void moveWalls(double t);
     void indexWalls();
 

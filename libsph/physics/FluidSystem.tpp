@@ -233,12 +233,26 @@ void FluidSystem<D>::addWallForces(double t) {
         if (!patch.cells) continue;
         const bool free = patch.motion && patch.motion->isFree();
         std::vector<Vec<D>> before;
-        if (free) before = acceleration;
+        if (free || patch.recordsLoad) before = acceleration;
         patch.model->addWallForces(view, *patch.cells, patch.begin, patch.end);
+        if (patch.recordsLoad) recordLoad(patch, before);
         if (!free) continue;
         std::vector<BodyLoadShare<D>> shares = bodyLoadShares(*patch.motion, fluid, before);
         if (bodyLoadsOverRanks) shares = bodyLoadsOverRanks(shares);
         loadFreeBody(*patch.motion, shares, gravityAt(t), t);
+    }
+}
+
+template <int D>
+void FluidSystem<D>::recordLoad(Patch<D>& patch, const std::vector<Vec<D>>& accelerationBefore) const {
+    const auto& acceleration = fluid[fields::acceleration];
+    const double* m = fluid[fields::mass].data();
+    patch.load = {};
+    for (std::size_t i = 0; i < fluid.ownedCount(); ++i) {
+        if (ownedFluid && !(*ownedFluid)[i]) continue;  // a copy: its owner adds it
+        const Vec<D> force = -m[i] * (acceleration[i] - accelerationBefore[i]);
+        if (force == Vec<D>::Zero()) continue;  // beyond the patch's reach
+        for (int d = 0; d < D; ++d) patch.load[static_cast<std::size_t>(d)].add(force[d]);
     }
 }
 

@@ -178,7 +178,19 @@ class ParallelRun(unittest.TestCase):
         self.assert_equal_to_serial(self.case("rectangularTank2D", 0.6, 0.3), (2, 3), ("0.3", "0.6"))
 
     def test_the_deficiency_correction_in_the_dam_break(self):
-        self.assert_equal_to_serial(self.case("damBreakWallPressure2D", 0.1, 0.05), (3,), ("0.05", "0.1"))
+        # With its function objects and the load on its wall-force patch (recorded at each
+        # evaluation from each rank's owned fluid: exact sums over the ranks).
+        case = self.case("damBreakWallPressure2D", 0.1, 0.05, functions=True)
+        edit(os.path.join(case, "system", "controlDict"), r"^functions\s*\{", "functions\n{\n    loads { type forces; patches (tank); executeInterval 0.005; }",
+             re.M)
+        self.assert_equal_to_serial(case, (3,), ("0.05", "0.1"))
+        with open(os.path.join(case + ".np3", "postProcessing", "loads", "0", "forces.dat")) as f:
+            rows = [line.split() for line in f if not line.startswith("#")]
+        self.assertEqual(len(rows), 21)
+        # At t = 0 the column (H = 0.6 m, 2H wide) stands hydrostatic: the tank carries its weight
+        # and the left wall rho g H^2 / 2 (read -1728 and -7053 N/m).
+        self.assertAlmostEqual(float(rows[0][1]), -1000 * 9.81 * 0.6**2 / 2, delta=0.03 * 1766)
+        self.assertAlmostEqual(float(rows[0][2]), -1000 * 9.81 * 0.6 * 1.2, delta=0.01 * 7063)
 
     def test_delta_sph_and_particle_shifting(self):
         # Passes over the neighbours of neighbours (the renormalised density gradient; the free
