@@ -28,7 +28,10 @@
 //     density their compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij
 //     (the paper's calibration, which cancels accelerations, blew up a hydrostatic tank with it);
 //  4. the partner: the wallDistance damper (default, WallDistancePenalty) or a discrete law
-//     (Monaghan & Kajtar 2009, Lennard-Jones) adds its force.
+//     (Monaghan & Kajtar 2009, Lennard-Jones) adds its force. The damper blends the wall
+//     particles whose tangent plane fluid i lies in front of, and all of them where i lies
+//     behind its nearest wall particle's plane (it has crossed the wall): fluid beyond a convex
+//     edge lies behind the planes of the face that ends there without having crossed it.
 // Why wallPressure is the default (doc/boundaryFindings.md): the calibrated C_j makes the
 // sampled particles' normal acceleration equal the wall's, so it also cancels the real
 // deceleration of fluid arriving at a wall (impacts blow up) and has no bound where the

@@ -416,6 +416,36 @@ TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
     }
 }
 
+TEST(DeficiencyCorrection, WallDistancePenaltyLeavesAloneFluidBeyondAConvexEdge) {
+    // A solid quadrant x < 0, y < 0 in one layer: its top face (normal +y), its right face
+    // (normal +x), the edge particle at the origin (their mean). Fluid at (0.3 dx, -dx), beside
+    // the right face, lies a spacing behind the top face's plane without having crossed any wall:
+    // the partner sees only the right face, 0.3 dx away (beyond the spring's dx/4; at rest: no
+    // damper), and gives nothing. Fluid at (-0.3 dx, -dx) has crossed (inside the solid, behind
+    // its nearest wall particle, on the right face): every plane holds it, pushing it out.
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls{Vec<2>::Zero()};
+    std::vector<Vec<2>> normals{Vec<2>(1, 1).normalized()};
+    for (int k = 1; k <= 30; ++k) {
+        walls.push_back(Vec<2>(-k * dx, 0.0)), normals.push_back(Vec<2>(0, 1));
+        walls.push_back(Vec<2>(0.0, -k * dx)), normals.push_back(Vec<2>(1, 0));
+    }
+    const auto penaltyAt = [&](const Vec<2>& x) {
+        auto wallParticles = wallSet<2>(walls, Vec<2>(0, 1), dx);
+        wallParticles[fields::normal] = normals;
+        auto s = system<2>(fluidSet<2>({x}), std::move(wallParticles),
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                               dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
+                           h, Vec<2>(-2, -2), Vec<2>(1, 1));
+        s->evaluateRates(0.0);
+        return Vec<2>(s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0]);
+    };
+    const Vec<2> beyond = penaltyAt(Vec<2>(0.3 * dx, -dx));
+    EXPECT_EQ(beyond, Vec<2>::Zero()) << beyond.transpose();  // with the top face's planes: (14.0, 27.3)
+    const Vec<2> crossed = penaltyAt(Vec<2>(-0.3 * dx, -dx));
+    EXPECT_GT(crossed.x(), 0.5 / dx) << crossed.transpose();  // more than the spring at the wall's surface, K/dx
+}
+
 TEST(DeficiencyCorrection, DefaultSpringPushesOnlyWhileTheFluidClosesOnTheWallOrRests) {
     // The default partner: K = c0^2/200 = 0.5 (c0 = 10) within d_s = dx/4, the damper zeta = 1
     // within d0 = dx/2. At 0.1 dx: spring (K/dx)(1 - 0.4)^2; closing at 0.2 adds the damper

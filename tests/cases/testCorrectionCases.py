@@ -51,7 +51,7 @@ class CorrectionCases(unittest.TestCase):
                  ("system/controlDict", "endTime         1.2;", "endTime         0.6;")]
         with tempfile.TemporaryDirectory() as work:
             noise, last, leaks = run_case(work, "steepBulge3D", edits, "bulgeNoise")
-        self.assertAlmostEqual(noise, 192.4, delta=6.0, msg="pressure noise [Pa]")
+        self.assertAlmostEqual(noise, 171.9, delta=6.0, msg="pressure noise [Pa]")  # 192.4 before the partner left alone fluid above the crest
         self.assertEqual(last, 0.6)
         self.assertEqual(leaks, 0, "fluid behind the wall at some step")
 
