@@ -7,15 +7,18 @@
 //   g_ij = max(0, 1 - (r_ij . n_j) / d0),   s_ij = max(0, 1 - (r_ij . n_j) / d_s),   d_s <= d0
 //   u_ij = -(v_i - v_j) . n_j (the closing speed),   H(u) = 1 for u >= 0, else 0
 // zero beyond d0 (default dx/2, where the first fluid row starts), so fluid at rest on the wall
-// feels nothing. The sums run over the wall particles with r_ij . n_j >= 0, unless fluid i lies
-// behind its nearest wall particle's plane (it has crossed the wall: then over all): beyond a
-// convex edge (behind a box, above a bulge's crest) fluid lies behind the planes of the face
-// that ends there, and their gaps, growing with the depth behind them, made a damper far past
-// the step's stability (doc/boundaryFindings.md, "Fluid beyond a convex edge"). The damper zeta stops particles closing on the wall without storing
-// energy. The spring K (a squared velocity; default c0^2/200) holds what the correction does not: a slow creep through a one-layer floor, which the
-// damper, resisting speed only, lets through. Acting within d_s (default d0/2 = dx/4) it leaves the water at rest untouched. It pushes only while the
-// particle closes on the wall or rests (H): it gives back no energy an impact stored, so an impact does not ring (doc/boundaryFindings.md, "The
-// partner"). Example (constant/boundaryProperties, inside a deficiency-correction patch):
+// feels nothing. The sums run over the wall particles with r_ij . n_j >= 0, unless fluid i
+// lies behind its nearest wall particle's plane (it has crossed the wall: then over all):
+// beyond a convex edge (behind a box, above a bulge's crest) fluid lies behind the planes of
+// the face that ends there, and their gaps, growing with the depth behind them, made a damper
+// far past the step's stability (doc/boundaryFindings.md, "Fluid beyond a convex edge").
+// The damper zeta stops particles closing on the wall without storing energy. The spring K (a
+// squared velocity; default c0^2/200) holds what the correction does not: a slow creep through
+// a one-layer floor, which the damper, resisting speed only, lets through. Acting within d_s
+// (default d0/2 = dx/4) it leaves the water at rest untouched. It pushes only while the
+// particle closes on the wall or rests (H): it gives back no energy an impact stored, so an
+// impact does not ring (doc/boundaryFindings.md, "The partner").
+// Example (constant/boundaryProperties, inside a deficiency-correction patch):
 //   repulsion { type wallDistance; K 11.8; damping 1; distance 0.0075; springDistance 0.00375; }
 #pragma once
 
