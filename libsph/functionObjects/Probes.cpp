@@ -11,8 +11,8 @@ namespace sph {
 template <int D>
 Probes<D>::Probes(const Dictionary& dict, const FunctionObjectContext<D>& context)
     : points_(readSamplePoints(dict, "points", context.system, "probe")),
-      fields_(dict.get<std::vector<std::string>>("fields")),
       patchName_(dict.getOrDefault<std::string>("patch", "")),
+      fields_(dict.get<std::vector<std::string>>("fields")),
       reductions_(context.reductions) {
     if (fields_.empty()) dict.fail("fields", "lists no field");
     if (!patchName_.empty()) motion_ = patchByName(dict, "patch", patchName_, context.system).motion.get();

@@ -69,5 +69,6 @@ ParticleSet<D> readParticlePieces(const Communicator& ranks, const std::filesyst
 SPHKIT_INSTANTIATE(1)
 SPHKIT_INSTANTIATE(2)
 SPHKIT_INSTANTIATE(3)
+#undef SPHKIT_INSTANTIATE
 
 }  // namespace sph::parallel
