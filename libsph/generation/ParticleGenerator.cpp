@@ -406,6 +406,41 @@ void addSerialPlaces(ParticleSet<D>& set) {
     for (std::size_t i = 0; i < set.size(); ++i) place[i] = static_cast<int>(set.globalId[i]);
 }
 
+// A wall patch whose normals point away from the fluid beside it (a polyline's `side` the wrong
+// way round, a circle's `fluidInside` wrong): the solver would run it with the fluid behind the
+// wall. Each fluid particle next to a wall counts for its nearest wall particle's patch;
+// a patch with more of them behind it than in front stops the generator.
+template <int D>
+void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedWalls<D>& walls, const LatticeDomain<D>& lattice,
+                                  const std::vector<Vec<D>>& fluid, const GenerationShare* share) {
+    // Within 1.5 dx: fluid lattice points on a layered wall's own lattice are dropped, which
+    // leaves the nearest fluid a whole dx from the wall particles.
+    const double reach = 1.5 * lattice.dx;
+    SparseCellList<D> wallCells(lattice.lo, lattice.hi, reach);
+    wallCells.build(walls.particles.positions);
+    const std::size_t patches = walls.patchNames.size();
+    std::vector<double> counts(2 * patches, 0.0);  // per patch: fluid next to it, and of those behind it
+    for (const Vec<D>& x : fluid) {
+        double nearest = std::numeric_limits<double>::infinity();
+        std::optional<std::uint32_t> wall;
+        wallCells.forEachNeighbour(x, reach, [&](std::uint32_t j, const Vec<D>&, double r2) {
+            if (r2 < nearest) nearest = r2, wall = j;
+        });
+        if (!wall) continue;
+        const auto p = static_cast<std::size_t>(walls.patchOf[*wall]);
+        counts[2 * p] += 1.0;
+        if ((x - walls.particles.positions[*wall]).dot(walls.particles.normals[*wall]) < 0.0) counts[2 * p + 1] += 1.0;
+    }
+    const std::vector<double> totals = sumOverShares(share, counts);
+    for (std::size_t p = 0; p < patches; ++p)
+        if (2.0 * totals[2 * p + 1] > totals[2 * p])
+            throw FatalError(boundaries.subDict(walls.patchNames[p]).where(),
+                             fmt::format("wall patch '{}' faces away from its fluid: {} of the {} fluid particles next to it lie behind its "
+                                         "wall particles' normals (a polyline's or polygon's `side` left for right, a circle's, ellipse's or "
+                                         "surface's `fluidInside` the wrong way?)",
+                                         walls.patchNames[p], totals[2 * p + 1], totals[2 * p]));
+}
+
 template <int D>
 GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dictionary& dict, const std::filesystem::path& outputDirectory,
                            const GenerationShare* share) {
@@ -428,6 +463,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     if (boundaries) requireDistinctPatches(*boundaries, walls.patchNames, walls.patchOf, walls.particles.positions, wallCells, dx);
     const GeneratedFluid<D> fluid =
         fillFluid(dict, lattice, walls, WallClearance<D>(walls, wallCells, dx), shapeDomain, initialPressure, properties, share, notes);
+    if (boundaries) requireWallsFacingTheirFluid(*boundaries, walls, lattice, fluid.positions, share);
 
     const InitialState<D> state{properties, initialPressure};
     ParticleSet<D> fluidSet = fluidParticleSet(fluid, state, dx);

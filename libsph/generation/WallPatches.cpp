@@ -1,5 +1,6 @@
 #include "generation/WallPatches.hpp"
 
+#include "core/PlaneLoop.hpp"
 #include "generation/FluidRegions.hpp"
 #include "generation/SurfaceShapes.hpp"
 #include "io/SelectByType.hpp"
@@ -289,7 +290,11 @@ WallPatchParticles<2> wallPathPatch(const Dictionary& patch, double dx, int laye
     const std::vector<Vec<2>> points = patch.getVectorList<2>("points");
     if (points.size() < (Closed ? 3u : 2u)) patch.fail("points", Closed ? "a polygon needs at least 3 points" : "a polyline needs at least 2 points");
     WallPatchParticles<2> walls;
-    addWallPath(patch, points, Closed, sideSign(patch), dx, layers, offset, walls);
+    const double sign = sideSign(patch);
+    addWallPath(patch, points, Closed, sign, dx, layers, offset, walls);
+    // A polygon whose fluid side is its outside is a solid body the fluid regions leave out, as
+    // a circle with `fluidInside no` is (left of a counter-clockwise loop is its inside).
+    if (Closed && sign * signedArea(points) < 0.0) walls.solid = [points](const Vec<2>& x) { return insideLoop(points, x); };
     return walls;
 }
 
@@ -395,8 +400,10 @@ WallPatchRegistry<D> makeWallPatchRegistry() {
         planar<D>(wallPathPatch<false>));
     registry.add(
         "polygon",
-        {"a closed path of straight faces, a particle on every vertex (bisector normal); 2D", "",
-         withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
+        {"a closed path of straight faces, a particle on every vertex (bisector normal); with the fluid outside, a solid body the fluid regions "
+         "leave "
+         "out; 2D",
+         "", withLayout({{"points", "", "((x y) ...), at least 3"}, {"side", "left", "the fluid's side of the direction of travel: left or right"}})},
         planar<D>(wallPathPatch<true>));
     const std::vector<CoefficientDoc> fluidInside{{"fluidInside", "", "yes: a tank; no: a solid body the fluid regions leave out"}};
     registry.add("circle", {"a circle at equal arc steps; 2D", "", withLayout({{"centre", "", "(x y)"}, {"radius", "", "[m]"}, fluidInside[0]})},

@@ -166,6 +166,27 @@ TEST(WallPatches, PolygonVertexStandsForHalfOfEachSide) {
     EXPECT_LT(total.norm(), 1e-14);  // a closed surface
 }
 
+TEST(WallPatches, PolygonWithTheFluidOutsideIsASolidBody) {
+    // A triangle, counter-clockwise: its left is its inside. With `side right` (or clockwise with
+    // `side left`) the fluid is outside and the fluid regions leave out the triangle's inside;
+    // with the fluid inside it is a tank, and nothing is a solid.
+    const auto generated = [](const char* points, const char* side) {
+        return generateWithItsLayers<2>(
+            Dictionary::fromString(fmt::format("type polygon; points ({}); side {}; layers 1; firstLayerOffset 0;", points, side), "body"), 0.1,
+            anywhere<2>);
+    };
+    const char* counterClockwise = "(0 0) (1 0) (0.5 0.8)";
+    const char* clockwise = "(0 0) (0.5 0.8) (1 0)";
+    for (const WallPatchParticles<2>& body : {generated(counterClockwise, "right"), generated(clockwise, "left")}) {
+        ASSERT_TRUE(body.solid);
+        EXPECT_TRUE(body.solid(Vec<2>(0.5, 0.3)));
+        EXPECT_FALSE(body.solid(Vec<2>(0.5, 0.9)));
+        EXPECT_FALSE(body.solid(Vec<2>(0.1, 0.5)));  // beside a slanted side, level with the inside
+    }
+    EXPECT_FALSE(generated(counterClockwise, "left").solid);
+    EXPECT_FALSE(generated(clockwise, "right").solid);
+}
+
 namespace {
 
 // The smallest distance between two particles of a patch.

@@ -223,6 +223,10 @@ add("inconsistent geometry", "a wall patch listed twice", [edit(PARTICLES, "open
     "wall patch 'again' lays 798 of its 798 particles on those of patch 'tank' (the same patch listed twice?)")
 add("inconsistent geometry", "a polygon of 2 points", [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }", "column { type polygon; points ((0 0) (0.05 0)); }")],
     "a polygon needs at least 3 points")
+add("inconsistent geometry", "a polyline tank's `side` the wrong way round",
+    [edit(PARTICLES, "tank    { type boxWalls; min (0 0); max (0.40005 0.17145); layers 3; open (yMax); }",
+          "tank    { type polyline; points ((0 0.17145) (0 0) (0.40005 0) (0.40005 0.17145)); side right; layers 3; }")],
+    "wall patch 'tank' faces away from its fluid")
 add("inconsistent geometry", "fluid beside the tank (a warning)",
     [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
           "column  { type box; min (0 0); max ($a 0.1143); }\n    spill { type box; min (0.41 0); max (0.4242875 0.0142875); }")],
