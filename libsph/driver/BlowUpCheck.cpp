@@ -38,10 +38,14 @@ void checkFluidState(const ParticleSet<D>& fluid, const Vec<D>& lo, const Vec<D>
         what = fmt::format("has density {:g}, outside [0.5, 2] rho0 = [{:g}, {:g}]", rho[i], 0.5 * rho0, 2.0 * rho0);
     else
         what = fmt::format("left the domain [({:g}), ({:g})]", fmt::join(lo, " "), fmt::join(hi, " "));
+    const bool leftTheDomain = what.starts_with("left");
     throw FatalError(
         fmt::format("error: the run blew up at step {}, time {:.9g}: fluid particle id {} at ({:g}) {}.\n"
-                    "    The last written time is kept; reduce the time step (courant) or check the case.",
-                    step, t, fluid.globalId[i], fmt::join(x[i], " "), what));
+                    "    The last written time is kept; reduce the time step (courant) or check the case{}.",
+                    step, t, fluid.globalId[i], fmt::join(x[i], " "), what,
+                    leftTheDomain ? " (a splash over the walls: enlarge the domain, or have such particles removed with "
+                                    "`outOfDomain remove;` in system/controlDict)"
+                                  : ""));
 }
 
 template void checkFluidState<1>(const ParticleSet<1>&, const Vec<1>&, const Vec<1>&, FluidStateLimits, long, double);

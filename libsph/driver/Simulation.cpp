@@ -5,6 +5,7 @@
 #include "driver/CaseOutput.hpp"
 #include "driver/FluidSetup.hpp"
 #include "driver/FunctionObjectSchedule.hpp"
+#include "driver/OutOfDomain.hpp"
 #include "driver/Progress.hpp"
 #include "driver/RestartState.hpp"
 #include "driver/RunControls.hpp"
@@ -56,7 +57,7 @@ StepTaken advanceOneStep(CaseSetup<D>& setup, double t, long step, double target
 // From the start state to endTime, or to a stop signal (which writes the time reached).
 template <int D>
 RunCost timeLoop(const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup, RunControls controls,
-                 ControlDictWatcher& watcher, CaseOutput<D>& output, FunctionObjectSchedule<D>& functionObjects) {
+                 OutOfDomain outOfDomain, ControlDictWatcher& watcher, CaseOutput<D>& output, FunctionObjectSchedule<D>& functionObjects) {
     FluidSystem<D>& system = *setup.system;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
     const auto executeFunctionObjects = [&](double t, bool force) {
@@ -74,6 +75,7 @@ RunCost timeLoop(const std::filesystem::path& caseDirectory, const TimeDirectory
     double nextWrite = controls.nextWriteAfter(t);
     const long firstStep = step;
     const StopRequest stopRequest;
+    std::int64_t removedSoFar = 0;
     while (true) {
         const double timeTolerance = 1e-9 * controls.writeInterval;
         if (t >= controls.endTime - timeTolerance) break;
@@ -81,6 +83,14 @@ RunCost timeLoop(const std::filesystem::path& caseDirectory, const TimeDirectory
         const StepTaken taken = advanceOneStep(setup, t, step, std::min(nextWrite, controls.endTime), timeTolerance);
         t = taken.time;
         ++step;
+        if (outOfDomain == OutOfDomain::Remove) {
+            if (const std::vector<std::uint32_t> outside = fluidOutside(system.fluid, system.domainMin(), system.domainMax()); !outside.empty()) {
+                removeFluid(system.fluid, outside);
+                setup.integrator->particlesMigrated();
+                removedSoFar += static_cast<std::int64_t>(outside.size());
+                reportRemoved(step, t, static_cast<std::int64_t>(outside.size()), removedSoFar);
+            }
+        }
         checkFluidState(system.fluid, system.domainMin(), system.domainMax(), {c0, setup.rho0}, step, t);
         const bool last = t >= controls.endTime - timeTolerance;
         if (const int signal = stopRequest.signal(); signal != 0 && !last) {
@@ -138,6 +148,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
 
     const RunControls controls = RunControls::read(controlDict);
     const bool writeCsv = controlDict.getOrDefault("writeCsv", false);
+    const OutOfDomain outOfDomain = readOutOfDomain(controlDict);
     ControlDictWatcher watcher(caseDirectory / "system/controlDict", controlDict.getOrDefault("runTimeModifiable", true));
     if (mode == RunMode::TimeLoop && !(controls.endTime > startTime))
         controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", startTime, controls.endTime));
@@ -154,7 +165,7 @@ void run(const std::filesystem::path& caseDirectory, const Dictionary& controlDi
         output.writeRates(startTime);
         return;
     }
-    const RunCost cost = timeLoop(caseDirectory, start, setup, controls, watcher, output, functionObjects);
+    const RunCost cost = timeLoop(caseDirectory, start, setup, controls, outOfDomain, watcher, output, functionObjects);
     printRunReport(system, *setup.integrator, cost);
     functionObjects.reportErrorAgainstCost(caseDirectory, startTime, cost);
 }

@@ -184,6 +184,16 @@ bool DistributedSystem<D>::redistribute(bool sortByCell) {
 }
 
 template <int D>
+std::size_t DistributedSystem<D>::giveUpOwnedFluid(const std::vector<std::uint32_t>& places) {
+    std::size_t given = 0;
+    for (const std::uint32_t i : places) {
+        given += fluidOwned_[i] != 0;
+        fluidOwned_[i] = 0;
+    }
+    return given;
+}
+
+template <int D>
 bool DistributedSystem<D>::redistributeParticles(bool sortByCell, bool walls) {
     ParticleSet<D>& fluid = system_.fluid;
     const std::vector<std::int64_t> fluidBefore = ownedIds(fluid, fluidOwned_);

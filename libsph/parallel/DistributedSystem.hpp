@@ -50,6 +50,9 @@ public:
     // (new order numbers; walls keep theirs). Returns whether the particles this rank owns, or
     // their order, changed.
     [[nodiscard]] bool redistribute(bool sortByCell);
+    // Gives up the owned fluid particles among `places` (held places, ascending): the next
+    // redistribute drops them, copies included. Returns how many this rank owned.
+    std::size_t giveUpOwnedFluid(const std::vector<std::uint32_t>& places);
 
     // Collective. New boxes, each owned particle weighing weightPerParticle (a wall
     // wallWeight times that): a rank passes its measured cost per particle, so that the next

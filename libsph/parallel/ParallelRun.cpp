@@ -4,6 +4,7 @@
 #include "driver/BlowUpCheck.hpp"
 #include "driver/FluidSetup.hpp"
 #include "driver/FunctionObjectSchedule.hpp"
+#include "driver/OutOfDomain.hpp"
 #include "driver/Progress.hpp"
 #include "driver/RestartState.hpp"
 #include "driver/RunControls.hpp"
@@ -166,8 +167,8 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
 
 template <int D>
 void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirectory, const TimeDirectory& start, CaseSetup<D>& setup,
-              DistributedSystem<D>& shared, RunControls controls, ControlDictWatcher& watcher, FunctionObjectSchedule<D>& functionObjects,
-              bool writeCsv, double balanceThreshold) {
+              DistributedSystem<D>& shared, RunControls controls, OutOfDomain outOfDomain, ControlDictWatcher& watcher,
+              FunctionObjectSchedule<D>& functionObjects, bool writeCsv, double balanceThreshold) {
     FluidSystem<D>& system = *setup.system;
     TimeIntegrator<D>& integrator = *setup.integrator;
     const double c0 = std::visit([](const auto& eos) { return eos.c0; }, system.models().eos);
@@ -216,6 +217,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
     const long firstStep = step;
     CostBalance balance(balanceThreshold, step);
     double buildSeconds = 0.0;
+    std::int64_t removedSoFar = 0;
     while (true) {
         const double timeTolerance = 1e-9 * controls.writeInterval;
         if (t >= controls.endTime - timeTolerance) break;
@@ -250,6 +252,17 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         t = (taken >= dt && t + dt > target - timeTolerance) ? target : t + taken;
         ++step;
 
+        // Particles that left the domain go where the serial run's go, before the check: at once
+        // (a collective decision, then the halos built again without them).
+        if (outOfDomain == OutOfDomain::Remove) {
+            const std::vector<std::uint32_t> outside = fluidOutside(system.fluid, system.domainMin(), system.domainMax());
+            if (const std::int64_t removed = ranks.sumOverRanks(static_cast<std::int64_t>(shared.giveUpOwnedFluid(outside))); removed > 0) {
+                (void)shared.redistribute(false);
+                integrator.particlesMigrated();
+                removedSoFar += removed;
+                reportRemoved(step, t, removed, removedSoFar);
+            }
+        }
         std::optional<std::string> blowUp;
         try {
             checkFluidState(system.fluid, system.domainMin(), system.domainMax(), {c0, setup.rho0}, step, t);
@@ -302,7 +315,9 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
     std::optional<RunControls> controls;
     std::optional<ControlDictWatcher> watcher;
     bool writeCsv = false;
+    OutOfDomain outOfDomain = OutOfDomain::Stop;
     if (mode == RunMode::TimeLoop) {
+        outOfDomain = readOutOfDomain(controlDict);
         controls = RunControls::read(controlDict);
         if (!(controls->endTime > setup.header.time))
             controlDict.fail("endTime", fmt::format("must be later than the start time {:g}, found {:g}", setup.header.time, controls->endTime));
@@ -321,7 +336,7 @@ void runOfDimension(const Communicator& ranks, const std::filesystem::path& case
         controlDict, caseDirectory, setup.header.time, setup.rho0, shared.view(),
         [&setup](std::size_t patch) { setup.system->patches[patch].recordsLoad = true; }, reductions);
     together(ranks, [&] { controlDict.checkUnused(); });
-    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, *watcher, functionObjects, writeCsv, balanceThreshold);
+    timeLoop(ranks, caseDirectory, start, setup, shared, *controls, outOfDomain, *watcher, functionObjects, writeCsv, balanceThreshold);
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ std::vector<std::pair<std::string, long>> SundialsIntegrator<D>::counters() cons
     if (memory_) addCounts(counts);
     result.emplace_back("rejected steps (error test)", counts.rejected);
     result.emplace_back("restarts", restarts_);
-    result.emplace_back("resizes (crossed between ranks)", resizes_);
+    result.emplace_back("resizes (particles crossed or removed)", resizes_);
     if (!implicitSolve_) return result;
     result.emplace_back("nonlinear iterations", counts.nonlinearIterations);
     result.emplace_back("nonlinear convergence failures", counts.nonlinearFailures);

@@ -101,8 +101,10 @@ TEST(BlowUp, CheckNamesTheFirstFaultyParticleAndItsFault) {
     fluid.position[500] = sph::Vec<2>(0.5, 1.01);
     EXPECT_EQ(report(),
               "error: the run blew up at step 12, time 0.25: fluid particle id 5500 at (0.5 1.01) left the domain [(0 0), (1 1)].\n"
-              "    The last written time is kept; reduce the time step (courant) or check the case.");
+              "    The last written time is kept; reduce the time step (courant) or check the case (a splash over the walls: enlarge "
+              "the domain, or have such particles removed with `outOfDomain remove;` in system/controlDict).");
     fluid.position[500] = sph::Vec<2>(0.5, 0.5);
+    EXPECT_EQ(report().find("outOfDomain"), std::string::npos);  // the hint is for particles that left the domain only
     EXPECT_NE(report().find("particle id 5600 at (0.6 0.5) has density 499, outside [0.5, 2] rho0 = [500, 2000]"), std::string::npos);
     density[600] = std::nan("");
     EXPECT_NE(report().find("particle id 5600 at (0.6 0.5) has density nan"), std::string::npos);

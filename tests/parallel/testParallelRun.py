@@ -400,6 +400,21 @@ class ParallelRun(unittest.TestCase):
         self.assertEqual(len(re.findall(message, output)), 1, output[-3000:])
         self.assertEqual(output.count("blew up"), 1, output[-3000:])
 
+    def test_particles_that_leave_the_domain_removed_as_in_the_serial_run(self):
+        # The dam break's column (dx = a/20) thrown upwards at 3 m/s out of the open tank, with
+        # outOfDomain remove: the ranks remove the particles the serial run removes, at its steps.
+        case = self.case("damBreak2D", 0.05, 0.025)
+        generator = os.path.join(case, "system", "generateParticlesDict")
+        edit(generator, r"^spacing\s+[^;]+;", "spacing 0.0028575;")
+        edit(generator, r"max \(\$a 0\.1143\); \}", "max ($a 0.1143); velocity (0 3); }")
+        edit(os.path.join(case, "system", "controlDict"), r"^endTime", "outOfDomain remove;\nendTime")
+        subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case, "-overwrite"], capture_output=True, env=ENV, check=True)
+        if SANITIZED:
+            self.assertIn("left the domain and", self.run_case(case, 3).stdout)
+            return
+        for log in self.assert_equal_to_serial(case, (2, 3), ("0.025", "0.05")):
+            self.assertIn("left the domain and", log)
+
     def assert_close_to_serial(self, case, ranks, time, bounds):
         """The state at `time` on each rank count against the serial run: no array of `bounds`
         (name: largest difference) differs by more."""
@@ -453,7 +468,7 @@ class ParallelRun(unittest.TestCase):
                     "    upper { type box; min (0 0.5); max (1 1); velocity (1 2); }\n}\n")
         subprocess.run([os.path.join(BIN, "generateParticles"), "-case", streams, "-overwrite"], capture_output=True, env=ENV, check=True)
         for log in self.assert_equal_to_serial(streams, (2, 3), ("0.02", "0.04")):
-            self.assertGreater(int(re.search(r"resizes \(crossed between ranks\)\s+(\d+)", log).group(1)), 0)
+            self.assertGreater(int(re.search(r"resizes \(particles crossed or removed\)\s+(\d+)", log).group(1)), 0)
         if SANITIZED:
             return
         # CVODE on one rank is the serial run; on three, the dot products and norms of its

@@ -115,6 +115,7 @@ add("unknown name", "periodic direction `w`", [edit(PARTICLES, "max (0.43 0.2); 
     "unknown direction 'w'; valid directions are: x y")
 add("unknown name", "`startFrom firstTime`", [edit(CONTROL, "startFrom       latestTime;", "startFrom       firstTime;")],
     "expected latestTime or startTime, found 'firstTime'")
+add("unknown name", "`outOfDomain delete`", [append(CONTROL, "outOfDomain delete;\n")], "expected stop or remove, found 'delete'")
 add("unknown name", "misspelt keyword `courrant`", [edit(TIME, "courant     0.2;", "courrant     0.2;")], "'courrant' in dictionary 'timeIntegration'")
 add("unknown name", "misspelt keyword in a model, `alfa`", [edit(SCHEMES, "alpha 0.02;", "alfa 0.02;")], "keyword 'alpha' is missing")
 add("unknown name", "a patch that is not in the state", [append(BOUNDARY, "lid { type dummyParticles; }\n")],
