@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""Six cases the project does not ship, written as a user would (the shipped cases' schemes:
+Wendland C2, hdx 1.3, continuity, artificial viscosity 0.02, Fourtakas diffusion, symplectic,
+Courant 0.2, c0 = 10 sqrt(g H)), each run with the boundary-integral deficiency correction,
+free-slip dummy particles and dynamic boundary particles; every patch's layout is the one its
+model asks for (no `layers`), so that a model is one word:
+
+- wedge2D: a 0.5 m column breaking onto a triangular wedge (a convex apex of 69 degrees);
+- piston2D: a piston wave maker, 0.1 m at 1 Hz into water 0.4 m deep (breaking waves);
+- vTank2D: still water in a V-shaped tank whose bottom corner is 53 degrees;
+- paddle2D: a paddle 0.3 x 0.04 m spinning at 3 rad/s in a tank (moving convex corners);
+- slosh3D: a 3D tank surged near its first natural frequency (A = 0.02 m, 1 Hz);
+- fastBulge2D: a narrow floor bulge, 0.12 m high and 0.06 m wide, rising in 0.3 s.
+
+Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
+at any step (wallPenetrations), the wall time (one thread, two runs at a time), and for the V
+tank the pressure's error against hydrostatic at the end (L2 and max over rho g H, below the
+top 0.1 m) and the fluid's RMS speed then. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--work DIR]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 15 minutes on 2 cores).
+"""
+import argparse
+import concurrent.futures
+import glob
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
+MODELS = {"deficiencyCorrectionBoundaryIntegral": "correction", "dummyParticles": "dummy", "dynamicBoundary": "dynamic"}
+
+# name: (dimension, dx, domain, fluid regions, wall patches, {patch: motion}, end time, depth H)
+CASES = {
+    "wedge2D": (2, 0.01, "{ min (-0.1 -0.1); max (2.1 1.1); }", "column { type box; min (0 0); max (0.5 0.5); }",
+                "tank { type boxWalls; min (0 0); max (2 1); open (yMax); }\n"
+                "wedge { type polygon; points ((1.2 0) (1.5 0) (1.35 0.22)); side right; }", {"tank": "", "wedge": ""}, 2.0, 0.5),
+    "piston2D": (2, 0.01, "{ min (-0.3 -0.1); max (2.1 1.1); }", "water { type box; min (0 0); max (2 0.4); }",
+                 "tank { type polyline; points ((-0.25 0) (2 0) (2 1)); }\npiston { type polyline; points ((0 1) (0 0)); side left; }",
+                 {"tank": "", "piston": "motion { type oscillation; amplitude (0.1 0); frequency 1; rampTime 0.5; }"}, 4.0, 0.4),
+    "vTank2D": (2, 0.01, "{ min (-0.7 -0.1); max (0.7 1.2); }", "water { type polygon; points ((0 0) (0.4 0.8) (-0.4 0.8)); }",
+                "tank { type polyline; points ((-0.5 1) (0 0) (0.5 1)); side left; }", {"tank": ""}, 3.0, 0.8),
+    "paddle2D": (2, 0.01, "{ min (-0.1 -0.1); max (1.1 1.1); }", "water { type box; min (0 0); max (1 0.7); }",
+                 "tank { type boxWalls; min (0 0); max (1 1); open (yMax); }\n"
+                 "paddle { type polygon; points ((0.35 0.33) (0.65 0.33) (0.65 0.37) (0.35 0.37)); side right; }",
+                 {"tank": "", "paddle": "motion { type rotation; centre (0.5 0.35); omega 3; }"}, 3.0, 0.7),
+    "slosh3D": (3, 0.02, "{ min (-0.1 -0.1 -0.1); max (0.7 0.4 0.6); }", "water { type box; min (0 0 0); max (0.6 0.3 0.2); }",
+                "tank { type boxWalls; min (0 0 0); max (0.6 0.3 0.5); open (zMax); }",
+                {"tank": "motion { type oscillation; amplitude (0.02 0 0); frequency 1.0; rampTime 0.5; }"}, 4.0, 0.2),
+    "fastBulge2D": (2, 0.01, "{ min (-0.1 -0.2); max (1.1 1.1); }", "water { type box; min (0 0); max (1 0.4); }",
+                    "tank { type polyline; points ((0 1) (0 0) (1 0) (1 1)); }",
+                    {"tank": "motion { type gaussianBulge; centre (0.5 0); amplitude 0.12; width 0.06; period 1.2; }"}, 2.4, 0.4),
+}
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def prepare(work, name, model):
+    dimension, dx, domain, fluid, walls, motions, end, depth = CASES[name]
+    directory = os.path.join(work, f"{name}-{MODELS[model]}")
+    subprocess.run(["rm", "-rf", directory], check=True)
+    write(f"{directory}/system/controlDict", f"application wcsph;\nendTime {end};\nwriteInterval 0.1;\n"
+          "functions\n{\n    leaks { type wallPenetrations; }\n}\n")
+    write(f"{directory}/system/generateParticlesDict", f"dimension {dimension};\nspacing {dx};\ndomain {domain};\n"
+          f"initialPressure hydrostatic;\nfluid\n{{\n    {fluid}\n}}\nboundaries\n{{\n{walls}\n}}\n")
+    write(f"{directory}/system/sphSchemes", "kernel { type wendlandC2; hdx 1.3; }\ndensity { type continuity; }\n"
+          "viscosity { type artificial; alpha 0.02; }\ndensityDiffusion { type fourtakas; delta 0.1; }\n")
+    write(f"{directory}/system/timeIntegration", "integrator { type symplectic; }\ncourant 0.2;\n")
+    gravity = "(0 -9.81)" if dimension == 2 else "(0 0 -9.81)"
+    write(f"{directory}/constant/fluidProperties",
+          f"rho0 1000;\ngravity {gravity};\nequationOfState {{ type tait; gamma 7; c0FromHeight {{ coefficient 10; height {depth}; }} }}\n")
+    write(f"{directory}/constant/boundaryProperties", "".join(f"{patch} {{ type {model}; {motion} }}\n" for patch, motion in motions.items()))
+    subprocess.run([os.path.join(BIN, "generateParticles"), "-case", directory], check=True, capture_output=True)
+    return directory
+
+
+def read(path):
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    data = grid.GetPointData()
+    return vtk_to_numpy(grid.GetPoints().GetData()), {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i)) for i in range(data.GetNumberOfArrays())}
+
+
+def hydrostatic_error(directory, end):
+    """The V tank's pressure against rho g (surface - y) at the end, below the top 0.1 m: L2 and
+    max over rho g H (the surface the mean height of the 20 highest particles); and the fluid's
+    RMS speed, what is left of the start's disturbance (the lattice meets the slanted walls in
+    steps), whose acoustic breathing swings the pressure by a few per cent of rho g H."""
+    x, fields = read(os.path.join(directory, f"{end:g}", "fluid.vtu"))
+    y = x[:, 1]
+    surface = np.sort(y)[-20:].mean()
+    below = y < surface - 0.1
+    error = fields["pressure"][below] - 1000 * 9.81 * (surface - y[below])
+    scale = 1000 * 9.81 * CASES["vTank2D"][7]
+    speed = np.sqrt(np.mean(np.sum(fields["velocity"] ** 2, axis=1)))
+    return np.sqrt(np.mean(error ** 2)) / scale, np.abs(error).max() / scale, speed
+
+
+def run(work, name, model):
+    directory = prepare(work, name, model)
+    start = time.time()
+    result = subprocess.run([os.path.join(BIN, "wcsph"), "-case", directory], capture_output=True, text=True,
+                            env=dict(os.environ, OMP_NUM_THREADS="1"))
+    seconds = time.time() - start
+    counts = [int(line.split()[1]) for path in glob.glob(os.path.join(directory, "postProcessing", "leaks", "*", "penetrations.dat"))
+              for line in open(path) if not line.startswith("#")]
+    outcome = "ran to the end" if result.returncode == 0 else result.stderr.strip().splitlines()[0].replace("|", "/")
+    figure = ""
+    if name == "vTank2D" and result.returncode == 0:
+        figure = "at t = 3 s: pressure error L2 %.4f, max %.4f rho g H; RMS speed %.4f m/s" % hydrostatic_error(directory, CASES[name][6])
+    return name, model, outcome, max(counts, default=0), seconds, figure
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--markdown", help="write the table to FILE")
+    parser.add_argument("--work", default=os.path.join(ROOT, "build", "outsideCases"))
+    options = parser.parse_args()
+    jobs = [(options.work, name, model) for name in CASES for model in MODELS]
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        rows = list(pool.map(lambda job: run(*job), jobs))
+    lines = ["| case | model | outcome | most fluid behind a wall at any step | wall time [s] | figure |", "|---|---|---|---|---|---|"]
+    lines += ["| %s | %s | %s | %d | %.1f | %s |" % row for row in rows]
+    print("\n".join(lines))
+    if options.markdown:
+        header = ["# Cases written outside the project", "", "Written by `utilities/outsideCases/outsideCases.py --markdown`. " + __doc__.strip(), ""]
+        write(options.markdown, "\n".join(header + lines) + "\n")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
