@@ -132,7 +132,7 @@ void DeficiencyCorrection<D, Weighting>::resume(const BoundaryView<D>& view, std
 }
 
 template <int D, class Weighting>
-void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t begin,
+void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, std::size_t /*begin*/,
                                                        std::size_t end) {
     const std::size_t n = view.fluid.ownedCount();
     const Vec<D>& gravity = view.gravity;
@@ -153,7 +153,7 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& vi
     select(radialDirection_,
            [&](auto radial) { std::visit([&](const auto& kernel) { weighPairs<decltype(radial)::value>(view, patchCells, kernel); }, view.kernel); });
     select(wallPressureCalibration, [&](auto wallPressure) {
-        std::visit([&](const auto& kernel) { setWallParticles<decltype(wallPressure)::value>(view, begin, end, gravity, lambda, kernel); },
+        std::visit([&](const auto& kernel) { setWallParticles<decltype(wallPressure)::value>(view, patchCells, gravity, lambda, kernel); },
                    view.kernel);
     });
     select(radialDirection_, [&](auto radial) {
@@ -178,16 +178,28 @@ void DeficiencyCorrection<D, Weighting>::weighPairs(const BoundaryView<D>& view,
     const double radius = view.supportRadius;
     // Each fluid particle's weights, blend c_i and area integral g_i; the pairs are kept (in
     // this thread's list) for the correction, so the search and weights run once.
+    // The fluid in cell order, so that the particles of a cell share the patch's stencil (the
+    // patch list has the fluid list's grid); most fluid cells have none of the patch within reach.
+    const CellLinkedList<D>& fluidCells = view.fluidCells;
 #pragma omp parallel
     {
         auto& pairs = pairsPerThread_[static_cast<std::size_t>(omp_get_thread_num())];
         pairs.clear();
+        typename CellLinkedList<D>::StencilRanges stencil;
+        std::uint32_t stencilCell = std::numeric_limits<std::uint32_t>::max();
 #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < fluidCells.pointCount(); ++k) {
+            const std::size_t i = fluidCells.sortedIndex(k);
+            if (i >= n) continue;
+            if (fluidCells.cellAt(k) != stencilCell) {
+                stencilCell = fluidCells.cellAt(k);
+                stencil = patchCells.anyPointNear(stencilCell) ? patchCells.stencilRanges(fluidCells.sortedPosition(k))
+                                                               : typename CellLinkedList<D>::StencilRanges{};
+            }
             double sum = 0.0;
             Vec<D> blend = Vec<D>::Zero(), areaSum = Vec<D>::Zero();
             const auto first = static_cast<std::uint32_t>(pairs.size());
-            patchCells.forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+            patchCells.forEachNeighbour(stencil, x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
                 const double distance = std::sqrt(r2);
                 if (distance == 0.0) return;
                 const double W = kernel.value(distance);
@@ -207,7 +219,7 @@ void DeficiencyCorrection<D, Weighting>::weighPairs(const BoundaryView<D>& view,
 
 template <int D, class Weighting>
 template <bool WallPressure, class Kernel>
-void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>& view, std::size_t begin, std::size_t end, const Vec<D>& gravity,
+void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Vec<D>& gravity,
                                                           double lambda, const Kernel& kernel) {
     // The equation of state is read once per wall particle, not per pair: visited there.
     const EquationOfState& eos = view.eos;
@@ -225,15 +237,23 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
     const bool literal = calibration_ == DeficiencyCalibration::Literal;
     const Vec<D>* areaIntegral = separateAreaIntegral(radialDirection_) ? areaIntegral_.data() : blend_.data();
     const auto& fluidCells = view.fluidCells;
-    // Each wall particle's pressure, density, scale R_j and push.
+    // Each wall particle's pressure, density, scale R_j and push, in the patch list's cell order:
+    // the particles of a cell share the fluid's stencil (the two lists have one grid).
 #pragma omp parallel
     {
         std::vector<std::pair<double, std::uint32_t>> sample;  // one per thread, reused
+        typename CellLinkedList<D>::StencilRanges stencil;
+        std::uint32_t stencilCell = std::numeric_limits<std::uint32_t>::max();
 #pragma omp for schedule(static)
-        for (std::size_t j = begin; j < end; ++j) {
+        for (std::size_t k = 0; k < patchCells.pointCount(); ++k) {
+            const std::size_t j = patchCells.sortedIndex(k);
+            if (patchCells.cellAt(k) != stencilCell) {
+                stencilCell = patchCells.cellAt(k);
+                stencil = fluidCells.stencilRanges(patchCells.sortedPosition(k));
+            }
             WallPressureExtrapolation<D> extrapolation;
             double scaleNumerator = 0.0, scaleDenominator = 0.0;
-            fluidCells.forEachNeighbour(xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
+            fluidCells.forEachNeighbour(stencil, xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
                 const double W = kernel.value(std::sqrt(r2));
                 extrapolation.add(W, p[s], rho[s], r);
                 scaleNumerator += W * areaIntegral[s].dot(normal[j]);

@@ -90,7 +90,7 @@ private:
     template <bool Radial, class Kernel>
     void weighPairs(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel);
     template <bool WallPressure, class Kernel>
-    void setWallParticles(const BoundaryView<D>& view, std::size_t begin, std::size_t end, const Vec<D>& gravity, double lambda,
+    void setWallParticles(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Vec<D>& gravity, double lambda,
                           const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner>
     void applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity);

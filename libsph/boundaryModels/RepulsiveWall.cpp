@@ -56,6 +56,7 @@ void addRepulsion(const BoundaryView<D>& view, const CellLinkedList<D>& patchCel
             const double range = repulsionRange(law, view.supportRadius);
 #pragma omp parallel for schedule(static)
             for (std::size_t i = 0; i < n; ++i) {
+                if (!patchCells.anyPointNear(x[i])) continue;
                 Vec<D> sum = Vec<D>::Zero();
                 patchCells.forEachNeighbour(x[i], range, [&](std::uint32_t k, const Vec<D>& r, double r2) {
                     const double distance = std::sqrt(r2);

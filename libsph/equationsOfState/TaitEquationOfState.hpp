@@ -43,7 +43,9 @@ struct TaitEquationOfState {
         const double ratio = rho / rho0;
         return B * ((wholeGamma > 0 ? wholePower(ratio, wholeGamma) : std::pow(ratio, gamma)) - 1.0) + p0;
     }
-    double density(double p) const { return rho0 * std::pow((p - p0) / B + 1.0, 1.0 / gamma); }
+    // At p0 (a wall clamped there, or with no fluid near) exactly rho0, which std::pow gives too,
+    // without its hundred cycles.
+    double density(double p) const { return p == p0 ? rho0 : rho0 * std::pow((p - p0) / B + 1.0, 1.0 / gamma); }
     // The stiffness and exponent of p - p0 = K ((rho/rho0)^n - 1), for hydrostatic corrections.
     double stiffness() const { return B; }
     double exponent() const { return gamma; }

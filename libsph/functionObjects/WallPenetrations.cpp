@@ -31,13 +31,14 @@ std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
         double nearest = std::numeric_limits<double>::infinity();
         double side = 1.0;
         for (const CellLinkedList<D>* list : lists)
-            list->forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
-                // Of equidistant particles the one it lies behind wins: the count ignores visiting order.
-                if ((layer && layer[j] != 0) || r2 > nearest) return;
-                if (r2 == nearest && r.dot(normal[j]) >= side) return;
-                nearest = r2;
-                side = r.dot(normal[j]);
-            });
+            if (list->anyPointNear(x[i]))
+                list->forEachNeighbour(x[i], radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
+                    // Of equidistant particles the one it lies behind wins: the count ignores visiting order.
+                    if ((layer && layer[j] != 0) || r2 > nearest) return;
+                    if (r2 == nearest && r.dot(normal[j]) >= side) return;
+                    nearest = r2;
+                    side = r.dot(normal[j]);
+                });
         if (side < 0.0) ++behind;
     }
     return behind;

@@ -35,10 +35,17 @@ public:
         const double u = std::min(distance / step_, static_cast<double>(intervals));
         const auto k = std::min(static_cast<std::size_t>(u), static_cast<std::size_t>(intervals - 1));
         const double tail = tail_[k] + (u - static_cast<double>(k)) * (tail_[k + 1] - tail_[k]);
-        return area * tail * rDotN / std::pow(distance, D);
+        return area * tail * rDotN / distanceToTheD(distance);
     }
 
 private:
+    // |r|^D by multiplication: std::pow of a double took a tenth of a 3D run with the correction.
+    static double distanceToTheD(double distance) {
+        double power = distance;
+        for (int d = 1; d < D; ++d) power *= distance;
+        return power;
+    }
+
     static constexpr int intervals = 2048;
     double support_ = 0.0, step_ = 1.0;
     std::vector<double> tail_;

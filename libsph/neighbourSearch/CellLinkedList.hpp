@@ -174,6 +174,9 @@ public:
     void markCellsNearPoints();
     // Whether a point of the last build lies in the stencil of `cell` (after markCellsNearPoints).
     bool anyPointNear(std::uint32_t cell) const { return pointNear_[cell] != 0; }
+    // The same for the cell of x: false where forEachNeighbour(x, ...) would visit no point
+    // (always true on a list that does not keep the marks).
+    bool anyPointNear(const Vec<D>& x) const { return pointNear_.empty() || pointNear_[cellIndex(x)] != 0; }
 
 private:
     void markCellsNear();

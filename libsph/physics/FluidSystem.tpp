@@ -104,7 +104,10 @@ void FluidSystem<D>::indexWalls() {
             if (wallParticleEnd_ != patch.begin) throw std::logic_error("wall-particle patches must precede wall-force patches");
             wallParticleEnd_ = patch.end;
         } else {
-            if (!patch.cells) patch.cells.emplace(domainMin_, domainMax_, supportRadius_, periodic_);
+            if (!patch.cells) {
+                patch.cells.emplace(domainMin_, domainMax_, supportRadius_, periodic_);
+                patch.cells->markCellsNearPoints();  // the patch's passes over the fluid skip the cells far from it
+            }
             patch.cells->build(walls.position, patch.begin, patch.end);
         }
     }

@@ -161,6 +161,7 @@ TEST(CellLinkedList, CellsNearPointsAreThoseWhoseStencilHasOne) {
                     const bool marked = cells.anyPointNear(probe.cellAt(0));
                     ASSERT_EQ(marked, cells.stencilRanges(query).count > 0)
                         << "(" << x << ", " << y << "), periodic " << periodicX << ", build " << build;
+                    ASSERT_EQ(cells.anyPointNear(query), marked);  // by position: the cell it lies in
                     (marked ? near : far) += 1;
                 }
             }
@@ -169,6 +170,13 @@ TEST(CellLinkedList, CellsNearPointsAreThoseWhoseStencilHasOne) {
             points = {{0.5, 0.5}, {0.02, 0.9}};  // the second build must clear the first's marks
         }
     }
+}
+
+// A list that does not keep the marks answers that any point may be near: callers then search.
+TEST(CellLinkedList, ListWithoutTheMarksHasAnyPointNearEverywhere) {
+    sph::CellLinkedList<2> cells(sph::Vec<2>::Zero(), sph::Vec<2>::Ones(), 0.1);
+    cells.build({sph::Vec<2>(0.9, 0.9)});
+    EXPECT_TRUE(cells.anyPointNear(sph::Vec<2>(0.05, 0.05)));
 }
 
 // The stencil restricted to some cells lists the full stencil's places in those cells, in the

@@ -6,13 +6,15 @@ run over their particle counts), as a Markdown table. The time loop is timed by 
 itself, without start-up; the case writes only at its end time, and that write (the solver's
 "output" part) is left out of the rate.
 
-Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--threads 1 2] [--ranks 2] [--scaling]
+Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--boundary MODEL] [--threads 1 2] [--ranks 2] [--scaling]
                                          [--factors 2 1 0.5] [--end-time T] [--repeat N] [--busy]
                                          [--roofline [--peak-gflops G] [--bandwidth B]] [--work DIR]
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/ or --work).
 Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
 fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
-wall particles, 0.1 s). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
+wall particles, 0.1 s). --boundary puts every wall patch on another model (its name in
+constant/boundaryProperties; the patches laid out as it asks: one layer on the wall for a wall-force
+model such as deficiencyCorrectionBoundaryIntegral). --factors scales the spacing (0.5: 4x the particles in 2D, 8x in 3D);
 box extents are rounded to whole spacings. --end-time shortens the run (for the large ones).
 --repeat runs each configuration N times, the thread counts taking turns so that a slow spell of
 a shared machine falls on all of them, and reports the median time loop with the fastest and
@@ -46,13 +48,21 @@ MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 WORK = os.path.join(ROOT, "build", "benchmark")
 
 
-def prepare(case, spacing_factor, work):
-    directory = os.path.join(work, "%s-x%g" % (case, spacing_factor))
+def prepare(case, spacing_factor, work, boundary=None):
+    directory = os.path.join(work, "%s-x%g%s" % (case, spacing_factor, "-" + boundary if boundary else ""))
     shutil.rmtree(directory, ignore_errors=True)
     shutil.copytree(os.path.join(ROOT, "utilities", "benchmark", case), directory)
     generate = os.path.join(directory, "system/generateParticlesDict")
     with open(generate) as f:
         text = f.read()
+    if boundary:  # every patch on the model, laid out as it asks (the patches' `layers` left out)
+        properties = os.path.join(directory, "constant/boundaryProperties")
+        with open(properties) as f:
+            models = f.read()
+        with open(properties, "w") as f:
+            f.write(re.sub(r"type\s+\w+;", "type %s;" % boundary, models))
+        boundaries = re.search(r"(?m)^boundaries\b", text).start()
+        text = text[:boundaries] + re.sub(r"\s*layers\s+\d+;", "", text[boundaries:])
     spacing = float(re.search(r"(?m)^spacing\s+([0-9.e+-]+);", text).group(1)) * spacing_factor
     text = re.sub(r"(?m)^spacing\s+[0-9.e+-]+;", "spacing     %.10g;" % spacing, text)
     # Boxes need whole numbers of spacings: each max moves to the nearest one from its min.
@@ -125,6 +135,7 @@ def start_busy_process():
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", default="damBreak2D")
+    parser.add_argument("--boundary", help="every wall patch on this boundary model (default: the case's dynamicBoundary)")
     parser.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--ranks", type=int, nargs="+", default=[], help="MPI rank counts to run, one thread a rank (builds with MPI)")
     parser.add_argument("--scaling", action="store_true", help="also at 4x fewer and 4x more particles (2D: spacing x2, x0.5)")
@@ -207,7 +218,7 @@ def measure(args, factors):
     peaks, medians = [], []
     configurations = [(threads, None) for threads in args.threads] + [(1, ranks) for ranks in args.ranks]
     for factor in factors:
-        directory = prepare(args.case, factor, args.work)
+        directory = prepare(args.case, factor, args.work, args.boundary)
         runs = {configuration: [] for configuration in configurations}
         for _ in range(args.repeat):
             for threads, ranks in configurations:
