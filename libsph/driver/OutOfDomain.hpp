@@ -4,9 +4,9 @@
 //     outOfDomain     remove;     // the particle is removed and the run goes on
 //
 // `remove` is DualSPHysics' exclusion of particles that leave the domain: a splash over an open
-// tank's wall need not end a run. Each step that removes any prints a line; the run report
-// counts them. A particle that leaves through a wall is removed all the same: count leaks with
-// `wallPenetrations`.
+// tank's wall need not end a run. Each step that removes any prints a line with its count and
+// the count so far. A particle that leaves through a wall is removed all the same: count leaks
+// with `wallPenetrations`.
 #pragma once
 
 #include "core/ParticleSet.hpp"
