@@ -28,6 +28,7 @@ void CaseOutput<D>::writeState(const std::filesystem::path& directory, double t,
     collectRestartState(*setup_.system, *setup_.integrator, setup_.integratorType, header_);
     StateHeader wallHeader = header_;
     wallHeader.patchNames = setup_.patchNames;
+    wallHeader.patchLayers = setup_.patchLayers;
     writeParticleFile(directory / "fluid.vtu", setup_.system->fluid, header_);
     writeParticleFile(directory / "walls.vtu", setup_.system->walls, wallHeader);
 }

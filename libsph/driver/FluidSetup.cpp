@@ -98,10 +98,13 @@ void requireUnitNormals(const ParticleSet<D>& set, const std::filesystem::path& 
                             file.string(), set.globalId[i], fmt::join(normal[i].data(), normal[i].data() + D, " "), normal[i].norm()));
 }
 
-// Each patch's layers of wall particles (the wall field `layer`) against what its model needs.
+// Each patch's layers of wall particles against what its model needs: the wall field `layer`
+// counted, or the generator's record (`patchLayers`) where it is more (a solid whose layers from
+// opposite faces meet inside it holds, behind each face, more than any particle's own count).
 template <int D>
 void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDict, const std::vector<std::string>& patchNames,
-                       const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support, double dx, const StateShare<D>* share) {
+                       const std::vector<double>& patchLayers, const std::vector<std::unique_ptr<BoundaryModel<D>>>& models, double support,
+                       double dx, const StateShare<D>* share) {
     if (!walls.has(fields::layer)) return;
     std::vector<double> layerCounts(patchNames.size(), 0.0);
     const auto& patch = walls[fields::patch];
@@ -111,6 +114,8 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
         most = std::max(most, layer[w] + 1.0);
     }
     if (share) share->largestOverRanks(layerCounts);
+    if (patchLayers.size() == patchNames.size())
+        for (std::size_t p = 0; p < patchNames.size(); ++p) layerCounts[p] = std::max(layerCounts[p], patchLayers[p]);
     const std::vector<int> layers(layerCounts.begin(), layerCounts.end());
     for (std::size_t p = 0; p < patchNames.size(); ++p) {
         const Dictionary& patchDict = boundaryDict.subDict(patchNames[p]);
@@ -126,8 +131,8 @@ void requireWallLayout(const ParticleSet<D>& walls, const Dictionary& boundaryDi
             patchDict.fail(
                 "type", fmt::format("'{}' needs at least {} layers of wall particles to fill the kernel support ({:g} = {:g} dx) behind "
                                     "the wall, but patch '{}' has {}; generate it with layers {}; in system/generateParticlesDict (or with no layers "
-                                    "there: the generator then takes them from the model), or choose a wall-force model "
-                                    "(deficiencyCorrection) on one layer",
+                                    "there: the generator then takes them from the model; a solid thinner than its layers holds fewer, as "
+                                    "generateParticles notes), or choose a wall-force model (deficiencyCorrection) on one layer",
                                     type, needed, support, support / dx, patchNames[p], layers[p], needed));
     }
 }
@@ -230,8 +235,8 @@ FluidModels<D> selectFluidModels(const Dictionary& schemes, Kernel<D> kernel, co
 // the wall-force patches.
 template <int D>
 std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, const Dictionary& boundaryDict, const std::filesystem::path& wallFile,
-                                    ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const ModelContext& context, double support,
-                                    const StateShare<D>* share) {
+                                    ParticleSet<D>& walls, const std::vector<std::string>& patchNames, const std::vector<double>& patchLayers,
+                                    const ModelContext& context, double support, const StateShare<D>* share) {
     const auto& patchOfWall = walls[fields::patch];
     checkOnEveryRank(share, [&] {
         for (int p : patchOfWall)
@@ -251,7 +256,7 @@ std::vector<Patch<D>> selectPatches(const std::filesystem::path& caseDirectory, 
         const Dictionary& patchDict = boundaryDict.subDict(name);
         boundaryModels.push_back(selectByType(boundaryRegistry, patchDict, patchDict, context));
     }
-    requireWallLayout(walls, boundaryDict, patchNames, boundaryModels, support, context.dx, share);
+    requireWallLayout(walls, boundaryDict, patchNames, patchLayers, boundaryModels, support, context.dx, share);
     const auto rank = [&](int patch) {
         return std::pair(boundaryModels[static_cast<std::size_t>(patch)]->actsThroughWallParticles() ? 0 : 1, patch);
     };
@@ -339,8 +344,9 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     context.artificialViscosity = std::holds_alternative<ArtificialViscosityMonaghan1992>(models.viscosity);
 
     setup.patchNames = state.wallHeader.patchNames;
-    std::vector<Patch<D>> patches =
-        selectPatches<D>(caseDirectory, boundaryDict, stateFile(start.path, "walls"), state.walls, setup.patchNames, context, support, share);
+    setup.patchLayers = state.wallHeader.patchLayers;
+    std::vector<Patch<D>> patches = selectPatches<D>(caseDirectory, boundaryDict, stateFile(start.path, "walls"), state.walls, setup.patchNames,
+                                                     setup.patchLayers, context, support, share);
     selectIntegrator<D>(timeIntegration, schemes, models.shifting.enabled(), setup);
 
     for (int d = 0; d < D; ++d)

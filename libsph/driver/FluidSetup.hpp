@@ -27,6 +27,7 @@ struct CaseSetup {
     double fixedDeltaT = 0.0;  // 0: adaptive
     StateHeader header;
     std::vector<std::string> patchNames;
+    std::vector<double> patchLayers;       // as the wall state records them (ParticleFile.hpp)
     std::vector<Dictionary> dictionaries;  // checked for unused keywords once everything is read
 };
 

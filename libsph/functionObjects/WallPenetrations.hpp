@@ -3,7 +3,11 @@
 // postProcessing/<name>/<t0>/penetrations.dat: time, the count, and the largest count so far.
 // A fluid particle i has passed the wall when, for the nearest first-layer wall particle j
 // within the kernel support (any patch), (x_i - x_j) . n_j < 0: it lies behind the layer of
-// particles on (correction, repulsion) or nearest (dummy, dynamic) the wall surface.
+// particles on (correction, repulsion) or nearest (dummy, dynamic) the wall surface; and, where
+// the wall turns away from the fluid (a convex edge or corner), behind every first-layer
+// particle k there too: i in front of a k with (x_k - x_j) . (n_k - n_j) > 0 is outside the
+// solid, between the edge particle's bisector plane and the faces (the nearest-plane test alone
+// counted fluid resting against a box's edges as behind it).
 // Example (system/controlDict, functions):
 //   leaks { type wallPenetrations; }
 #pragma once

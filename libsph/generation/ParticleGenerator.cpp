@@ -157,6 +157,7 @@ template <int D>
 struct GeneratedWalls {
     WallPatchParticles<D> particles;
     std::vector<std::string> patchNames;
+    std::vector<double> patchLayers;                         // the layers the fluid finds behind each patch's faces
     std::vector<int> patchOf;                                // per particle
     std::vector<std::function<bool(const Vec<D>&)>> solids;  // where no fluid goes
 };
@@ -185,6 +186,8 @@ GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomai
             walls.patchOf.push_back(static_cast<int>(walls.patchNames.size()));
         }
         walls.patchNames.push_back(name);
+        const int deepest = generated.layers.empty() ? -1 : *std::max_element(generated.layers.begin(), generated.layers.end());
+        walls.patchLayers.push_back(generated.filledThrough ? layout.layers : deepest + 1);
         if (generated.solid) walls.solids.push_back(generated.solid);
     }
     return walls;
@@ -482,6 +485,7 @@ GenerationSummary generate(const std::filesystem::path& caseDirectory, const Dic
     // Walls first: the solver takes a time directory with a fluid state for a complete state.
     StateHeader wallHeader = header;
     wallHeader.patchNames = walls.patchNames;
+    wallHeader.patchLayers = walls.patchLayers;
     const std::vector<double> totals = sumOverShares(share, {static_cast<double>(fluidSet.size()), static_cast<double>(fluid.dropped)});
     const GenerationSummary summary{D,    static_cast<std::size_t>(totals[0]), wallSet.size(), static_cast<std::size_t>(totals[1]), fluid.warnings,
                                     notes};

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <numbers>
 #include <optional>
 
@@ -120,6 +122,15 @@ WallPatchParticles<D> boxObstacle(const Dictionary& patch, double dx, int layers
         if (d == D) break;
     }
     walls.solid = [lo, hi](const Vec<D>& x) { return (x.array() > lo.array()).all() && (x.array() < hi.array()).all(); };
+    const int thinnest =
+        std::min_element(axes.begin(), axes.end(), [](const LatticeAxis& a, const LatticeAxis& b) { return a.count < b.count; })->count;
+    walls.filledThrough = thinnest < 2 * layers && thinnest >= layers;
+    if (thinnest < 2 * layers)
+        walls.notes.push_back(walls.filledThrough
+                                  ? fmt::format("the layers from its faces meet inside it, where it is thinner than twice its {} layers", layers)
+                                  : fmt::format("thinner than its {} layers: it holds {} behind each face, and the fluid on its "
+                                                "sides reach each other through it",
+                                                layers, (thinnest + 1) / 2));
     return walls;
 }
 
@@ -284,6 +295,61 @@ void addWallPath(const Dictionary& patch, const std::vector<Vec<2>>& points, boo
 
 namespace {
 
+// A solid body thinner than twice its layers: the layers laid from its faces meet inside it and,
+// where it is thinner than its layers, the deeper ones pass out of its far side into the fluid
+// (a 2 dx plate with dummy particles' three layers put its third layers among the fluid on
+// either side, and the run blew up). Keeps the particles inside the solid or on its surface and,
+// of any two on one place (closer than dx/10: a solid a whole number of spacings thick lays
+// the layers of opposite faces on one another), the one of the lower layer (the first laid on a
+// tie), with a note of how many went.
+void keepWithinSolid(WallPatchParticles<2>& walls, double dx) {
+    std::vector<std::size_t> order(walls.positions.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return walls.layers[a] < walls.layers[b]; });
+    const double cell = 0.1 * dx;
+    const auto cellOf = [&](const Vec<2>& x) { return std::pair{std::lround(std::floor(x.x() / cell)), std::lround(std::floor(x.y() / cell))}; };
+    std::map<std::pair<long, long>, std::vector<Vec<2>>> kept;
+    const auto crowded = [&](const Vec<2>& x) {
+        const auto [cx, cy] = cellOf(x);
+        for (long i = cx - 1; i <= cx + 1; ++i)
+            for (long j = cy - 1; j <= cy + 1; ++j)
+                if (const auto it = kept.find({i, j}); it != kept.end())
+                    for (const Vec<2>& y : it->second)
+                        if ((y - x).norm() < 0.1 * dx) return true;
+        return false;
+    };
+    WallPatchParticles<2> within;
+    within.solid = walls.solid;
+    within.notes = walls.notes;
+    std::vector<bool> keep(order.size(), false);
+    std::size_t outside = 0;
+    for (const std::size_t k : order) {
+        const Vec<2>& x = walls.positions[k];
+        // Just behind the particle, so that one on the surface counts as inside.
+        if (!walls.solid(x - 1e-6 * dx * walls.normals[k])) {
+            ++outside;
+            continue;
+        }
+        if (crowded(x)) continue;
+        keep[k] = true;
+        kept[cellOf(x)].push_back(x);
+    }
+    for (std::size_t k = 0; k < keep.size(); ++k)
+        if (keep[k]) within.add(walls.positions[k], walls.normals[k], walls.spacings[k], walls.layers[k], walls.areas[k]);
+    const int layers = 1 + *std::max_element(walls.layers.begin(), walls.layers.end());
+    if (const std::size_t left = walls.positions.size() - within.positions.size(); left > 0) {
+        within.filledThrough = outside == 0;
+        within.notes.push_back(outside == 0
+                                   ? fmt::format("the layers from its faces meet inside it, where it is thinner than twice its {} layers ({} "
+                                                 "wall particles on another layer's place left out)",
+                                                 layers, left)
+                                   : fmt::format("thinner than its {} layers: {} wall particles that would lie outside it left out and {} on another "
+                                                 "layer's; it holds {} behind each face, and the fluid on its sides reach each other through it",
+                                                 layers, outside, left - outside, 1 + *std::max_element(within.layers.begin(), within.layers.end())));
+    }
+    walls = std::move(within);
+}
+
 // A polyline (open) or polygon (closed) patch: its points and side, laid by addWallPath.
 template <bool Closed>
 WallPatchParticles<2> wallPathPatch(const Dictionary& patch, double dx, int layers, double offset) {
@@ -294,7 +360,10 @@ WallPatchParticles<2> wallPathPatch(const Dictionary& patch, double dx, int laye
     addWallPath(patch, points, Closed, sign, dx, layers, offset, walls);
     // A polygon whose fluid side is its outside is a solid body the fluid regions leave out, as
     // a circle with `fluidInside no` is (left of a counter-clockwise loop is its inside).
-    if (Closed && sign * signedArea(points) < 0.0) walls.solid = [points](const Vec<2>& x) { return insideLoop(points, x); };
+    if (Closed && sign * signedArea(points) < 0.0) {
+        walls.solid = [points](const Vec<2>& x) { return insideLoop(points, x); };
+        keepWithinSolid(walls, dx);
+    }
     return walls;
 }
 
@@ -318,6 +387,7 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
     WallPatchParticles<2> walls;
     for (int layer = 0; layer < layers; ++layer) {
         const double distance = (layer + offset) * dx;
+        if (!fluidInside && distance >= axes.minCoeff()) break;  // past the middle of the solid
         // Each layer keeps about dx between neighbours: its perimeter grows or shrinks with the offset.
         const double layerPerimeter = perimeter + (fluidInside ? 1.0 : -1.0) * 2.0 * std::numbers::pi * distance;
         const int n = std::max(3, static_cast<int>(std::lround(layerPerimeter / dx)));
@@ -333,10 +403,12 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
             walls.add(centre + onCurve - distance * intoFluid, intoFluid, layerPerimeter / n, layer);
         }
     }
-    if (!fluidInside)
+    if (!fluidInside) {
         walls.solid = [centre, axes](const Vec<2>& x) {
             return std::pow((x.x() - centre.x()) / axes.x(), 2) + std::pow((x.y() - centre.y()) / axes.y(), 2) < 1.0;
         };
+        keepWithinSolid(walls, dx);
+    }
     return walls;
 }
 

@@ -55,6 +55,10 @@ struct WallPatchParticles {
     std::vector<double> areas;  // the length (2D) or area (3D) of wall each particle stands for
     // For an obstacle (a closed curve with the fluid outside): true inside it, where no fluid goes.
     std::function<bool(const Vec<D>&)> solid;
+    // A solid whose layers from opposite faces meet inside it, at least as thick as its layers:
+    // the fluid at any face finds them all behind it, though no particle lies that deep from
+    // its own face (the wall field `layer` counts from the nearest face).
+    bool filledThrough = false;
     std::vector<std::string> notes;  // adjusted spacings, for the user to read
 
     void add(const Vec<D>& x, const Vec<D>& n, double spacing, int layer, double area) {

@@ -92,6 +92,7 @@ StateHeader headerOf(vtkUnstructuredGrid* grid, const std::filesystem::path& fil
     header.domainMin = required("domainMin", static_cast<std::size_t>(header.dimension));
     header.domainMax = required("domainMax", static_cast<std::size_t>(header.dimension));
     header.periodic = numbers(data, "periodic");
+    header.patchLayers = numbers(data, "patchLayers");
     for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
         const char* name = data->GetArrayName(a);
         if (name && std::string_view(name).starts_with(restartPrefix)) header.restart[name + restartPrefix.size()] = numbers(data, name);
@@ -160,6 +161,7 @@ void writeParticleFile(const std::filesystem::path& file, const ParticleSet<D>& 
     data->AddArray(fieldArray<vtkDoubleArray>("domainMin", header.domainMin));
     data->AddArray(fieldArray<vtkDoubleArray>("domainMax", header.domainMax));
     if (!header.periodic.empty()) data->AddArray(fieldArray<vtkDoubleArray>("periodic", header.periodic));
+    if (!header.patchLayers.empty()) data->AddArray(fieldArray<vtkDoubleArray>("patchLayers", header.patchLayers));
     for (const auto& [key, values] : header.restart) data->AddArray(fieldArray<vtkDoubleArray>(std::string(restartPrefix) + key, values));
     const auto addStrings = [&](const char* name, const std::vector<std::string>& values) {
         auto strings = vtkSmartPointer<vtkStringArray>::New();

@@ -3,7 +3,8 @@
 // from them exactly (every field is Float64). Point data: one array per written field,
 // 3-component arrays for vectors (zero-padded below 3D), "id" for global ids. Field data:
 // TimeValue, step, dimension, spacing, domainMin, domainMax, periodic (when any direction is),
-// for walls patchNames, and for a state the solver wrote, "integrator" (the type that wrote it)
+// for walls patchNames and patchLayers (the layers the fluid finds behind each patch's faces,
+// as generateParticles laid them), and for a state the solver wrote, "integrator" (the type that wrote it)
 // and "restart:<key>" arrays: what the integrator and free bodies carry from step to step
 // besides particle fields, so a restart continues the run exactly.
 // Files are written to a temporary name in the same directory and renamed, so a reader never
@@ -30,6 +31,7 @@ struct StateHeader {
     std::vector<double> domainMin, domainMax;
     std::vector<double> periodic;  // 1 per periodic direction, 0 otherwise; empty: none
     std::vector<std::string> patchNames;
+    std::vector<double> patchLayers;  // per patch; empty (a file from before it): count the wall field `layer`
     std::string integrator;
     std::map<std::string, std::vector<double>> restart;
 };

@@ -56,9 +56,10 @@ void writeDirectoryTogether(const Communicator& ranks, const std::filesystem::pa
 
 template <int D>
 void writeState(const Communicator& ranks, const std::filesystem::path& directory, const DistributedSystem<D>& shared, StateHeader header,
-                const std::vector<std::string>& patchNames) {
+                const CaseSetup<D>& setup) {
     writeParticlePieces(ranks, directory, "fluid", shared.heldFluid(), header, shared.ownedFluidPlaces());
-    header.patchNames = patchNames;
+    header.patchNames = setup.patchNames;
+    header.patchLayers = setup.patchLayers;
     writeParticlePieces(ranks, directory, "walls", shared.heldWalls(), header, shared.ownedWallPlaces());
 }
 
@@ -159,7 +160,7 @@ void writeRates(const Communicator& ranks, const std::filesystem::path& caseDire
         if (ranks.rank() == 0) std::filesystem::create_directories(directory.parent_path());
     });
     writeDirectoryTogether(ranks, directory, [&](const std::filesystem::path& temporary) {
-        writeState(ranks, temporary, shared, setup.header, setup.patchNames);
+        writeState(ranks, temporary, shared, setup.header, setup);
         writeGatheredCsv(ranks, temporary, shared);
     });
     fmt::print("\nWrote the right-hand side at t = {:g} on {} ranks to {} (fluid.pvtu, walls.pvtu and .csv)\n", t, ranks.size(), directory.string());
@@ -189,7 +190,7 @@ void timeLoop(const Communicator& ranks, const std::filesystem::path& caseDirect
         collectRestartState(system, integrator, setup.integratorType, header);
         const std::string name = timeName(t);
         writeDirectoryTogether(ranks, caseDirectory / name, [&](const std::filesystem::path& temporary) {
-            writeState(ranks, temporary, shared, header, setup.patchNames);
+            writeState(ranks, temporary, shared, header, setup);
             if (writeCsv) writeGatheredCsv(ranks, temporary, shared);
         });
         if (ranks.rank() == 0) pvd.add(t, {name + "/fluid.pvtu", name + "/walls.pvtu"});

@@ -518,3 +518,35 @@ TEST(WallPenetrations, CountsFluidBehindTheNearestFirstLayerParticle) {
                   Vec<2>(2, 1));
     EXPECT_EQ(WallPenetrations<2>::count(s->view()), 2u);
 }
+
+TEST(WallPenetrations, FluidAgainstAConvexEdgeIsNotBehindIt) {
+    // One layer on a solid quadrant x < 0, y < 0 (the edge particle at the origin, its normal the
+    // faces' mean) and on a tank corner x > 0, y > 0 far from it (concave: the corner particle's
+    // normal the mean of the floor's and the side's). Against the edge, nearer its particle than
+    // any face's: (0.3 dx, -0.4 dx) in front of the right face (behind the edge particle's plane
+    // only) is outside; (-0.3 dx, -0.4 dx) behind both faces is inside. Under the tank's floor at
+    // (1.2 dx, -0.3 dx), in front of the corner and the side, it has leaked: the tank turns
+    // towards the fluid, so the floor's plane alone decides.
+    const double h = 1.3 * dx;
+    const Vec<2> tank(1.0, 1.0);
+    std::vector<Vec<2>> walls{Vec<2>::Zero(), tank};
+    std::vector<Vec<2>> normals{Vec<2>(1, 1).normalized(), Vec<2>(1, 1).normalized()};
+    for (int k = 1; k <= 10; ++k) {
+        walls.push_back(Vec<2>(-k * dx, 0.0)), normals.push_back(Vec<2>(0, 1));
+        walls.push_back(Vec<2>(0.0, -k * dx)), normals.push_back(Vec<2>(1, 0));
+        walls.push_back(tank + Vec<2>(k * dx, 0.0)), normals.push_back(Vec<2>(0, 1));
+        walls.push_back(tank + Vec<2>(0.0, k * dx)), normals.push_back(Vec<2>(1, 0));
+    }
+    const auto behindAt = [&](const Vec<2>& x) {
+        auto wallParticles = wallSet<2>(walls, Vec<2>(0, 1), dx);
+        wallParticles[fields::normal] = normals;
+        auto s = system<2>(fluidSet<2>({x}), std::move(wallParticles),
+                           std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
+                           Vec<2>(-2, -2), Vec<2>(3, 3));
+        return WallPenetrations<2>::count(s->view());
+    };
+    EXPECT_EQ(behindAt(Vec<2>(0.3 * dx, -0.4 * dx)), 0u);  // the nearest-plane test alone: 1
+    EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, -0.4 * dx)), 1u);
+    EXPECT_EQ(behindAt(tank + Vec<2>(1.2 * dx, -0.3 * dx)), 1u);
+    EXPECT_EQ(behindAt(tank + Vec<2>(1.2 * dx, 0.3 * dx)), 0u);
+}

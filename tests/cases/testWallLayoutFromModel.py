@@ -77,6 +77,37 @@ class WallLayoutFromModel(unittest.TestCase):
         self.assertEqual(solved.returncode, 0, solved.stdout[-2000:] + solved.stderr)
         self.assertTrue(os.path.exists(os.path.join(self.case, "0.01", "walls.vtu")))
 
+    def test_a_solid_thinner_than_twice_its_layers_holds_them_from_both_faces(self):
+        # Quintic kernel, hdx 1.2: dummy particles need 4 layers. A post 6 dx thick holds 3
+        # behind each face by the field `layer`, but the fluid at either face finds all 6 rows:
+        # the generator records 4 and the solver runs it, and continues from the state it wrote.
+        # A plate 2 dx thick holds 1 behind its long
+        # faces: the generator says the fluid on its sides reach each other through it, and the
+        # solver stops.
+        for width, runs in ((0.12, True), (0.04, False)):
+            with self.subTest(width=width):
+                shutil.copytree(CASE, self.case, dirs_exist_ok=True, ignore=shutil.ignore_patterns("0", "[1-9]*", "postProcessing", "log.*"))
+                edit(os.path.join(self.case, "system", "controlDict"), "endTime         2;", "endTime         0.002;")
+                post = f"post {{ type polygon; points ((1 0) ({1 + width:g} 0) ({1 + width:g} 0.5) (1 0.5)); side right; }}"
+                edit(self.particles, "    tank    {", f"    {post}\n    tank    {{")
+                with open(self.models, "a") as f:
+                    f.write("post { type dummyParticles; }\n")
+                made = generate(self.case)
+                self.assertEqual(made.returncode, 0, made.stderr)
+                note = "the layers from its faces meet inside it, where it is thinner than twice its 4 layers" if runs else "thinner than its 4 layers"
+                self.assertIn("note: wall patch 'post': " + note, made.stdout)
+                solved = subprocess.run([os.path.join(BIN, "wcsph"), "-case", self.case], capture_output=True, text=True, env=ENV)
+                if runs:
+                    self.assertEqual(solved.returncode, 0, solved.stdout[-2000:] + solved.stderr)
+                    # The written state keeps the record: a run continues from it.
+                    edit(os.path.join(self.case, "system", "controlDict"), "endTime         0.002;", "endTime         0.004;")
+                    resumed = subprocess.run([os.path.join(BIN, "wcsph"), "-case", self.case], capture_output=True, text=True, env=ENV)
+                    self.assertEqual(resumed.returncode, 0, resumed.stdout[-2000:] + resumed.stderr)
+                    self.assertIn("Starting time loop at t = 0.002", resumed.stdout)
+                else:
+                    self.assertIn("'dummyParticles' needs at least 4 layers of wall particles to fill the kernel support", solved.stderr)
+                    self.assertIn("a solid thinner than its layers holds fewer", solved.stderr)
+
     def test_without_a_model_the_generator_says_what_to_write(self):
         os.remove(self.models)
         edit(self.particles, "layers 4;", "")

@@ -207,6 +207,29 @@ int countAt(const WallPatchParticles<2>& walls, double dx, double i, double j, i
 
 }  // namespace
 
+TEST(WallPatches, SolidThinnerThanItsLayersKeepsThemInside) {
+    // A plate 2 dx thick and 10 dx tall with three layers from each face (dummy particles'): the
+    // third layers fell dx/2 outside the far faces, among the fluid, and the second layers on the
+    // other face's first. Now every particle is inside and none two within dx/4 (the closest pair
+    // of a corner, dx/2, kept). A circle of radius 1.2 dx: no layer laid past its middle.
+    const double dx = 0.01;
+    const WallPatchParticles<2> plate = generateWithItsLayers<2>(
+        Dictionary::fromString("type polygon; points ((0.49 0) (0.51 0) (0.51 0.1) (0.49 0.1)); side right; layers 3;", "baffle"), dx, anywhere<2>);
+    ASSERT_TRUE(plate.solid);
+    for (const Vec<2>& x : plate.positions) EXPECT_TRUE(x.x() > 0.49 && x.x() < 0.51 && x.y() > 0.0 && x.y() < 0.1) << x.transpose();
+    EXPECT_GE(closestPair(plate), 0.25 * dx);
+    ASSERT_EQ(plate.notes.size(), 1u);
+    EXPECT_NE(plate.notes[0].find("thinner than its 3 layers"), std::string::npos) << plate.notes[0];
+    const WallPatchParticles<2> thick = generateWithItsLayers<2>(
+        Dictionary::fromString("type polygon; points ((0.4 0) (0.6 0) (0.6 0.1) (0.4 0.1)); side right; layers 3;", "block"), dx, anywhere<2>);
+    EXPECT_TRUE(thick.notes.empty());
+    EXPECT_EQ(*std::max_element(thick.layers.begin(), thick.layers.end()), 2);
+    const WallPatchParticles<2> pin = generateWithItsLayers<2>(
+        Dictionary::fromString("type circle; centre (0 0); radius 0.012; fluidInside no; layers 3;", "pin"), dx, anywhere<2>);
+    for (const Vec<2>& x : pin.positions) EXPECT_LT(x.norm(), 0.012) << x.transpose();
+    EXPECT_GE(closestPair(pin), 0.25 * dx);
+}
+
 TEST(WallPatches, LayeredPolylineFillsTheBlockBehindATanksCorner) {
     // An L-shaped tank corner, fluid above and right of it, dx = 0.1, 3 layers from dx/2: each
     // side's 10 x 3 particles and the 3 x 3 block behind the corner, each particle in the layer

@@ -27,6 +27,7 @@ TEST(ParticleFile, RoundTripIsBitExact) {
     header.domainMin = {-1, -2};
     header.domainMax = {3, 4};
     header.patchNames = {"left", "right"};
+    header.patchLayers = {1, 4};
     sph::writeParticleFile(dir / "state.vtu", set, header);
 
     sph::StateHeader read;
@@ -36,6 +37,7 @@ TEST(ParticleFile, RoundTripIsBitExact) {
     EXPECT_EQ(read.spacing, 0.01);
     EXPECT_EQ(read.domainMax, header.domainMax);
     EXPECT_EQ(read.patchNames, header.patchNames);
+    EXPECT_EQ(read.patchLayers, header.patchLayers);
     ASSERT_EQ(back.size(), 3u);
     EXPECT_FALSE(back.has(sph::ScalarField{"scratch"}));  // not written
     for (std::size_t i = 0; i < 3; ++i) {
