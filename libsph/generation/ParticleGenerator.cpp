@@ -410,9 +410,13 @@ void addSerialPlaces(ParticleSet<D>& set) {
 }
 
 // A wall patch whose normals point away from the fluid beside it (a polyline's `side` the wrong
-// way round, a circle's `fluidInside` wrong): the solver would run it with the fluid behind the
-// wall. Each fluid particle next to a wall counts for its nearest wall particle's patch;
-// a patch with more of them behind it than in front stops the generator.
+// way round, a circle's `fluidInside` wrong), or with fluid on both sides (a polyline drawn
+// through a fluid region as a baffle: a polyline has one side): the solver would run it with
+// fluid behind the wall (a 2D baffle polyline on the correction ran with 57 fluid particles
+// behind it from the first step). Each fluid particle next to a wall counts for its nearest
+// wall particle's patch; a patch with more than a quarter of them behind it stops the generator
+// (fluid beside a convex corner can lie behind the corner particle's plane: a few, not a quarter),
+// as facing away with more than three quarters (about half lie behind a one-sided baffle).
 template <int D>
 void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedWalls<D>& walls, const LatticeDomain<D>& lattice,
                                   const std::vector<Vec<D>>& fluid, const GenerationShare* share) {
@@ -435,13 +439,21 @@ void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedW
         if ((x - walls.particles.positions[*wall]).dot(walls.particles.normals[*wall]) < 0.0) counts[2 * p + 1] += 1.0;
     }
     const std::vector<double> totals = sumOverShares(share, counts);
-    for (std::size_t p = 0; p < patches; ++p)
-        if (2.0 * totals[2 * p + 1] > totals[2 * p])
+    for (std::size_t p = 0; p < patches; ++p) {
+        const double next = totals[2 * p], behind = totals[2 * p + 1];
+        if (4.0 * behind > 3.0 * next)
             throw FatalError(boundaries.subDict(walls.patchNames[p]).where(),
                              fmt::format("wall patch '{}' faces away from its fluid: {} of the {} fluid particles next to it lie behind its "
                                          "wall particles' normals (a polyline's or polygon's `side` left for right, a circle's, ellipse's or "
                                          "surface's `fluidInside` the wrong way?)",
-                                         walls.patchNames[p], totals[2 * p + 1], totals[2 * p]));
+                                         walls.patchNames[p], behind, next));
+        if (4.0 * behind > next)
+            throw FatalError(boundaries.subDict(walls.patchNames[p]).where(),
+                             fmt::format("wall patch '{}' has fluid on both sides: {} of the {} fluid particles next to it lie behind its wall "
+                                         "particles' normals (a polyline or polygon has one side; a wall with fluid on both is a solid body, a "
+                                         "closed polygon with the fluid outside, or two patches back to back)",
+                                         walls.patchNames[p], behind, next));
+    }
 }
 
 template <int D>

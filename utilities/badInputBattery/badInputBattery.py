@@ -228,6 +228,10 @@ add("inconsistent geometry", "a polyline tank's `side` the wrong way round",
     [edit(PARTICLES, "tank    { type boxWalls; min (0 0); max (0.40005 0.17145); layers 3; open (yMax); }",
           "tank    { type polyline; points ((0 0.17145) (0 0) (0.40005 0) (0.40005 0.17145)); side right; layers 3; }")],
     "wall patch 'tank' faces away from its fluid")
+add("inconsistent geometry", "a polyline baffle drawn through the fluid (one-sided)",
+    [edit(PARTICLES, "open (yMax); }", "open (yMax); }\n    baffle { type polyline; points ((0.03 0) (0.03 0.08)); layers 3; }"),
+     edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type dummyParticles; noSlip no; }\nbaffle { type dummyParticles; }")],
+    "wall patch 'baffle' has fluid on both sides")
 add("inconsistent geometry", "fluid beside the tank (a warning)",
     [edit(PARTICLES, "column  { type box; min (0 0); max ($a 0.1143); }",
           "column  { type box; min (0 0); max ($a 0.1143); }\n    spill { type box; min (0.41 0); max (0.4242875 0.0142875); }")],
