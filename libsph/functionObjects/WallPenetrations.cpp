@@ -1,11 +1,11 @@
 #include "functionObjects/WallPenetrations.hpp"
 
+#include "neighbourSearch/WallSide.hpp"
 #include "physics/FluidSystemView.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 
 namespace sph {
 
@@ -35,28 +35,8 @@ std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
 #pragma omp parallel for schedule(static) reduction(+ : behind)
     for (std::size_t i = 0; i < n; ++i) {
         if (!system.ownsFluid(i)) continue;
-        double nearest = std::numeric_limits<double>::infinity();
-        double side = 1.0;
-        std::uint32_t nearestWall = 0;
-        Vec<D> fromNearest = Vec<D>::Zero();
-        forEachFirstLayerParticle(x[i], [&](std::uint32_t j, const Vec<D>& r, double r2) {
-            // Of equidistant particles the one it lies behind wins: the count ignores visiting order.
-            if (r2 > nearest || (r2 == nearest && r.dot(normal[j]) >= side)) return;
-            nearest = r2;
-            side = r.dot(normal[j]);
-            nearestWall = j;
-            fromNearest = r;
-        });
-        if (side >= 0.0) continue;
-        // Behind the nearest particle's plane. Where the wall turns away from the fluid (a convex
-        // edge: the normals part along the wall, (x_k - x_j) . (n_k - n_j) > 0) the solid is behind
-        // every plane there, so fluid in front of any of them is outside: it sits in the corner
-        // between the bisector's plane and the faces, nearer the edge's particle than the faces'.
-        bool inFrontOfAConvexNeighbour = false;
-        forEachFirstLayerParticle(x[i], [&](std::uint32_t k, const Vec<D>& r, double) {
-            if (r.dot(normal[k]) >= 0.0 && (fromNearest - r).dot(normal[k] - normal[nearestWall]) > 0.0) inFrontOfAConvexNeighbour = true;
-        });
-        if (!inFrontOfAConvexNeighbour) ++behind;
+        const auto side = wallSide<D>(normal, nullptr, [&](auto&& visit) { forEachFirstLayerParticle(x[i], visit); });
+        if (side && side->behind) ++behind;
     }
     return behind;
 }

@@ -9,6 +9,7 @@
 #include "io/ParticleFile.hpp"
 #include "io/ParticleState.hpp"
 #include "neighbourSearch/SparseCellList.hpp"
+#include "neighbourSearch/WallSide.hpp"
 #include "physics/FluidProperties.hpp"
 
 #include <fmt/format.h>
@@ -159,6 +160,7 @@ struct GeneratedWalls {
     std::vector<std::string> patchNames;
     std::vector<double> patchLayers;                         // the layers the fluid finds behind each patch's faces
     std::vector<int> patchOf;                                // per particle
+    std::vector<bool> patchIsSolid;                          // a body with the fluid outside
     std::vector<std::function<bool(const Vec<D>&)>> solids;  // where no fluid goes
 };
 
@@ -188,6 +190,7 @@ GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomai
         walls.patchNames.push_back(name);
         const int deepest = generated.layers.empty() ? -1 : *std::max_element(generated.layers.begin(), generated.layers.end());
         walls.patchLayers.push_back(generated.filledThrough ? layout.layers : deepest + 1);
+        walls.patchIsSolid.push_back(static_cast<bool>(generated.solid));
         if (generated.solid) walls.solids.push_back(generated.solid);
     }
     return walls;
@@ -414,9 +417,10 @@ void addSerialPlaces(ParticleSet<D>& set) {
 // through a fluid region as a baffle: a polyline has one side): the solver would run it with
 // fluid behind the wall (a 2D baffle polyline on the correction ran with 57 fluid particles
 // behind it from the first step). Each fluid particle next to a wall counts for its nearest
-// wall particle's patch; a patch with more than a quarter of them behind it stops the generator
-// (fluid beside a convex corner can lie behind the corner particle's plane: a few, not a quarter),
-// as facing away with more than three quarters (about half lie behind a one-sided baffle).
+// wall particle's patch, behind it as wallPenetrations judges (fluid beside a convex corner,
+// behind the corner particle's plane but in front of a face's, is in front); a patch with
+// more than a quarter of them behind it stops the generator, as facing away with more than three
+// quarters (about half lie behind a one-sided baffle).
 template <int D>
 void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedWalls<D>& walls, const LatticeDomain<D>& lattice,
                                   const std::vector<Vec<D>>& fluid, const GenerationShare* share) {
@@ -428,15 +432,12 @@ void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedW
     const std::size_t patches = walls.patchNames.size();
     std::vector<double> counts(2 * patches, 0.0);  // per patch: fluid next to it, and of those behind it
     for (const Vec<D>& x : fluid) {
-        double nearest = std::numeric_limits<double>::infinity();
-        std::optional<std::uint32_t> wall;
-        wallCells.forEachNeighbour(x, reach, [&](std::uint32_t j, const Vec<D>&, double r2) {
-            if (r2 < nearest) nearest = r2, wall = j;
-        });
-        if (!wall) continue;
-        const auto p = static_cast<std::size_t>(walls.patchOf[*wall]);
+        const auto side = wallSide<D>(walls.particles.normals.data(), walls.particles.layers.data(),
+                                      [&](auto&& visit) { wallCells.forEachNeighbour(x, reach, visit); });
+        if (!side) continue;
+        const auto p = static_cast<std::size_t>(walls.patchOf[side->nearestWall]);
         counts[2 * p] += 1.0;
-        if ((x - walls.particles.positions[*wall]).dot(walls.particles.normals[*wall]) < 0.0) counts[2 * p + 1] += 1.0;
+        if (side->behind) counts[2 * p + 1] += 1.0;
     }
     const std::vector<double> totals = sumOverShares(share, counts);
     for (std::size_t p = 0; p < patches; ++p) {
@@ -450,9 +451,12 @@ void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedW
         if (4.0 * behind > next)
             throw FatalError(boundaries.subDict(walls.patchNames[p]).where(),
                              fmt::format("wall patch '{}' has fluid on both sides: {} of the {} fluid particles next to it lie behind its wall "
-                                         "particles' normals (a polyline or polygon has one side; a wall with fluid on both is a solid body, a "
-                                         "closed polygon with the fluid outside, or two patches back to back)",
-                                         walls.patchNames[p], behind, next));
+                                         "particles' normals ({})",
+                                         walls.patchNames[p], behind, next,
+                                         walls.patchIsSolid[p] ? "a solid body this small is below what the spacing resolves: its wall particles "
+                                                                 "do not outline it; make it a few spacings across, or the spacing finer"
+                                                               : "a polyline or polygon has one side; a wall with fluid on both is a solid "
+                                                                 "body, a closed polygon with the fluid outside, or two patches back to back"));
     }
 }
 

@@ -152,6 +152,30 @@ TEST(BadInput, UnknownPeriodicDirection) {
                    "error: keyword 'periodic' in dictionary 'generateParticlesDict/domain': unknown direction 'z'; valid directions are: x y");
 }
 
+TEST(BadInput, SolidBelowWhatTheSpacingResolves) {
+    // A triangle with legs 2.2 dx on the correction's one layer, dx/2 inside its faces: one
+    // particle is left inside it, whose plane the fluid on two sides lies behind.
+    const auto triangle = [](double legs) {
+        const auto dir = copyCase("damBreak2D");
+        setEntry(dir / "system/generateParticlesDict", "spacing", "0.0028575");
+        const std::string tip = fmt::format("{:.7g}", 0.02 + legs * 0.0028575);
+        replaceInFile(
+            dir / "system/generateParticlesDict", "open (yMax); }",
+            "open (yMax); }\n    block { type polygon; points ((0.02 0.02) (" + tip + " 0.02) (0.02 " + tip + ")); side right; layers 1; }");
+        replaceInFile(dir / "constant/boundaryProperties", "noSlip no; }", "noSlip no; }\nblock { type deficiencyCorrectionBoundaryIntegral; }");
+        return dir;
+    };
+    try {
+        sph::generateParticles(triangle(2.2), true);
+        ADD_FAILURE() << "a triangle of 2.2 dx generated";
+    } catch (const sph::FatalError& e) {
+        expectContains(e.what(),
+                       "wall patch 'block' has fluid on both sides: 2 of the 4 fluid particles next to it lie behind its wall particles' "
+                       "normals (a solid body this small is below what the spacing resolves");
+    }
+    EXPECT_NO_THROW(sph::generateParticles(triangle(8.0), true));
+}
+
 TEST(BadInput, NegativeOrZeroSpacing) {
     for (const std::string spacing : {"-0.00142875", "0"}) {
         const auto dir = copyCase("damBreak2D");
