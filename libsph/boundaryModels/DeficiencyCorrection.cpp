@@ -3,6 +3,7 @@
 #include "boundaryModels/DeficiencyWeightingBoundaryIntegral.hpp"
 #include "boundaryModels/DeficiencyWeightingJones2010.hpp"
 #include "boundaryModels/WallPressureExtrapolation.hpp"
+#include "neighbourSearch/WallSide.hpp"
 
 #include <fmt/format.h>
 
@@ -318,12 +319,17 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
         // that ends there without having crossed any wall: only where it lies behind its nearest
         // wall particle's plane has it crossed; otherwise the planes it lies behind are not its
         // wall, and their gap, growing with the depth behind them, made a damper far past the
-        // step's stability (SPHERIC Test 2 blew up behind the box).
+        // step's stability (SPHERIC Test 2 blew up behind the box). Nor has fluid crossed that lies
+        // behind an edge particle's plane (the faces' mean normal) in front of a face beside it
+        // (WallSide.hpp): a piston flush with a tank's side wall turns the edge particle's normal
+        // into the side wall, and fluid in the corner between them, taking that for a crossing,
+        // was pushed into the side wall and floor while it crept through the piston's face.
         [[maybe_unused]] bool crossed = false;
         if constexpr (DistancePartner) {
-            double nearest = std::numeric_limits<double>::infinity();
-            for (std::uint32_t k = range.begin; k < range.end; ++k)
-                if (pairs[k].distance < nearest) nearest = pairs[k].distance, crossed = pairs[k].r.dot(normal[pairs[k].wall]) < 0.0;
+            const auto side = wallSide<D>(normal, nullptr, [&](auto&& visit) {
+                for (std::uint32_t k = range.begin; k < range.end; ++k) visit(pairs[k].wall, pairs[k].r, pairs[k].distance * pairs[k].distance);
+            });
+            crossed = side && side->behind;
         }
         for (std::uint32_t k = range.begin; k < range.end; ++k) {
             const auto& [j, W, blendWeight, distance, r] = pairs[k];

@@ -446,6 +446,35 @@ TEST(DeficiencyCorrection, WallDistancePenaltyLeavesAloneFluidBeyondAConvexEdge)
     EXPECT_GT(crossed.x(), 0.5 / dx) << crossed.transpose();  // more than the spring at the wall's surface, K/dx
 }
 
+TEST(DeficiencyCorrection, WallDistancePenaltyTakesFluidBesideAnEdgeParticleAsInFrontOfTheFace) {
+    // A piston x < 0 flush with a side wall y = 0 (2D): the side wall (normal +y), the piston's
+    // face x = 0 (normal +x), its underside on the side wall (normal -y) and the edge particle at
+    // the origin (normal (1, -1)/sqrt 2, the faces' mean, pointing into the side wall). Fluid at
+    // (0.1 dx, 0.2 dx), in the corner between face and side wall, lies behind the edge particle's
+    // plane (its nearest) but in front of the face: it has not crossed. The partner pushes it off
+    // the face (spring (K/dx)(1 - 0.4)^2 from the face's particles) and off the side wall; taken
+    // for a crossing, the underside's planes pushed it into the side wall (y: -5.8).
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls{Vec<2>::Zero(), Vec<2>::Zero()};
+    std::vector<Vec<2>> normals{Vec<2>(1, -1).normalized(), Vec<2>(0, 1)};
+    for (int k = 1; k <= 30; ++k) {
+        walls.push_back(Vec<2>(k * dx, 0.0)), normals.push_back(Vec<2>(0, 1));    // side wall in front of the piston
+        walls.push_back(Vec<2>(-k * dx, 0.0)), normals.push_back(Vec<2>(0, 1));   // side wall under it
+        walls.push_back(Vec<2>(-k * dx, 0.0)), normals.push_back(Vec<2>(0, -1));  // the piston's underside
+        walls.push_back(Vec<2>(0.0, k * dx)), normals.push_back(Vec<2>(1, 0));    // its face
+    }
+    auto wallParticles = wallSet<2>(walls, Vec<2>(0, 1), dx);
+    wallParticles[fields::normal] = normals;
+    auto s = system<2>(fluidSet<2>({Vec<2>(0.1 * dx, 0.2 * dx)}), std::move(wallParticles),
+                       std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                           dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
+                       h, Vec<2>(-2, -1), Vec<2>(2, 2));
+    s->evaluateRates(0.0);
+    const Vec<2> penalty = s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0];
+    EXPECT_GT(penalty.x(), 0.0) << penalty.transpose();
+    EXPECT_GE(penalty.y(), 0.0) << penalty.transpose();
+}
+
 TEST(DeficiencyCorrection, DefaultSpringPushesOnlyWhileTheFluidClosesOnTheWallOrRests) {
     // The default partner: K = c0^2/200 = 0.5 (c0 = 10) within d_s = dx/4, the damper zeta = 1
     // within d0 = dx/2. At 0.1 dx: spring (K/dx)(1 - 0.4)^2; closing at 0.2 adds the damper
