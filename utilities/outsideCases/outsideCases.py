@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Seventeen cases the project does not ship, written as a user would (the shipped cases' schemes:
+"""Eighteen cases the project does not ship, written as a user would (the shipped cases' schemes:
 Wendland C2, hdx 1.3, continuity, artificial viscosity 0.02, Fourtakas diffusion, symplectic,
 Courant 0.2, c0 = 10 sqrt(g H)), each run with the boundary-integral deficiency correction,
 free-slip dummy particles and dynamic boundary particles; every patch's layout is the one its
@@ -26,14 +26,16 @@ model asks for (no `layers`), so that a model is one word:
   started at full rate;
 - cylinder2D: a dam break onto a cylinder of radius 0.1 m, 0.1 m above the floor (a curved convex obstacle), in a tank
   1 m high, with `outOfDomain remove` (the run-up sheet on the far wall throws a few particles past 1.6 m);
-- piston3D: a piston (a box 4 dx thick spanning the channel) at 1 Hz, 0.05 m, in a 3D channel 0.25 m deep.
+- piston3D: a piston (a box 4 dx thick spanning the channel) at 1 Hz, 0.05 m, in a 3D channel 0.25 m deep;
+- floatingBox2D: a box 0.3 x 0.1 m of half the water's density released 0.02 m above its floating draft, a free
+  body always on the correction (the row's model on the tank): where it comes to rest against Archimedes.
 
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
 still-water cases the pressure's error against hydrostatic at the end (L2 and max over rho g H,
 below the top 0.1 m) and the fluid's RMS speed then, and the particles removed as they left the
 domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 40 minutes on 2 cores).
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 45 minutes on 2 cores).
 --markdown writes the table, keeping the rows of the cases not run; --check compares the runs'
 outcomes, counts and figures with a table's (not the wall times) and exits 1 where one differs
 (CTest's DocumentedFigures.outsideCases, label long).
@@ -106,11 +108,21 @@ CASES = {
                  "tank { type boxWalls; min (-0.2 0 0); max (1.5 0.3 0.5); open (zMax); }\n"
                  "piston { type box; min (-0.1 0 0); max (0 0.3 0.5); }",
                  {"tank": "", "piston": "motion { type oscillation; amplitude (0.05 0 0); frequency 1; rampTime 0.5; }"}, 3.0, 0.25),
+    "floatingBox2D": (2, 0.01, "{ min (-0.1 -0.1); max (1.1 1.1); }", "water { type box; min (0 0); max (1 0.5); }",
+                      "tank { type boxWalls; min (0 0); max (1 1); open (yMax); }\n"
+                      "box { type polygon; points ((0.35 0.47) (0.65 0.47) (0.65 0.57) (0.35 0.57)); side right; }",
+                      {"tank": "", "box": "motion { type freeBody; mass 15; momentOfInertia 0.125; centreOfMass (0.5 0.52); }"}, 4.0, 0.5),
 }
 STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
 # controlDict entries beyond the common ones: the cylinder's run-up sheet climbs the far wall past 1.6 m
 # in a few particles, which DualSPHysics would exclude; the count removed is reported.
 CONTROL = {"cylinder2D": "outOfDomain remove;\n"}
+# Function objects beyond wallPenetrations, and patches on a model of their own whatever the row's: a free
+# body's loads come from a wall-force model, so the floating box is always on the correction.
+FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInterval 0.01; }\n"}
+MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"}}
+# The floating box: its mass per unit length and width, and the fluid's density.
+BOX_MASS, BOX_WIDTH, RHO = 15.0, 0.3, 1000.0
 
 
 def write(path, text):
@@ -124,7 +136,7 @@ def prepare(work, name, model):
     directory = os.path.join(work, f"{name}-{MODELS[model]}")
     subprocess.run(["rm", "-rf", directory], check=True)
     write(f"{directory}/system/controlDict", f"application wcsph;\nendTime {end};\nwriteInterval 0.1;\n{CONTROL.get(name, '')}"
-          "functions\n{\n    leaks { type wallPenetrations; }\n}\n")
+          f"functions\n{{\n    leaks {{ type wallPenetrations; }}\n{FUNCTIONS.get(name, '')}}}\n")
     write(f"{directory}/system/generateParticlesDict", f"dimension {dimension};\nspacing {dx};\ndomain {domain};\n"
           f"initialPressure hydrostatic;\nfluid\n{{\n    {fluid}\n}}\nboundaries\n{{\n{walls}\n}}\n")
     write(f"{directory}/system/sphSchemes", "kernel { type wendlandC2; hdx 1.3; }\ndensity { type continuity; }\n"
@@ -133,7 +145,8 @@ def prepare(work, name, model):
     gravity = "(0 -9.81)" if dimension == 2 else "(0 0 -9.81)"
     write(f"{directory}/constant/fluidProperties",
           f"rho0 1000;\ngravity {gravity};\nequationOfState {{ type tait; gamma 7; c0FromHeight {{ coefficient 10; height {depth}; }} }}\n")
-    write(f"{directory}/constant/boundaryProperties", "".join(f"{patch} {{ type {model}; {motion} }}\n" for patch, motion in motions.items()))
+    models = {patch: MODEL_OF.get(name, {}).get(patch, model) for patch in motions}
+    write(f"{directory}/constant/boundaryProperties", "".join(f"{patch} {{ type {models[patch]}; {motion} }}\n" for patch, motion in motions.items()))
     subprocess.run([os.path.join(BIN, "generateParticles"), "-case", directory], check=True, capture_output=True)
     return directory
 
@@ -164,6 +177,21 @@ def hydrostatic_error(name, directory, end):
     return np.sqrt(np.mean(error ** 2)) / scale, np.abs(error).max() / scale, speed
 
 
+def floating_error(directory, end):
+    """The floating box's heave over the last second against Archimedes: its centre's mean height
+    and that of its rest, where it displaces its mass (draft M / (rho b)) and the water, of the area
+    its particles hold (N dx^2), stands level across the 1 m tank: the level is (N dx^2 + M / rho) / 1 m
+    and the box's centre, half its 0.1 m height above its bottom, sits at level - draft + 0.05 m.
+    Also its mean angle and the heave's standard deviation over that second."""
+    body = np.loadtxt(glob.glob(os.path.join(directory, "postProcessing", "box", "*", "body.dat"))[0])
+    last = body[body[:, 0] >= end - 1.0]
+    x, _ = read(os.path.join(directory, "0", "fluid.vtu"))
+    dx = CASES["floatingBox2D"][1]
+    level = (len(x) * dx * dx + BOX_MASS / RHO) / 1.0
+    rest = level - BOX_MASS / (RHO * BOX_WIDTH) + 0.05
+    return last[:, 2].mean(), rest, (last[:, 2].mean() - rest) / dx, last[:, 2].std(), last[:, 3].mean()
+
+
 def run(work, name, model):
     directory = prepare(work, name, model)
     start = time.time()
@@ -177,6 +205,8 @@ def run(work, name, model):
     removed = re.findall(r"left the domain and (?:was|were) removed \((\d+) so far\)", result.stdout)
     if removed:
         figure = f"{removed[-1]} fluid particles left the domain (removed)"
+    if name == "floatingBox2D" and result.returncode == 0:
+        figure = "box centre over the last 1 s: %.4f m against %.4f m at rest (%+.2f dx), heave std %.4f m, angle %.4f rad" % floating_error(directory, CASES[name][6])
     if name in STILL_WATER and result.returncode == 0:
         end = CASES[name][6]
         figure = f"at t = {end:g} s: pressure error L2 %.4f, max %.4f rho g H; RMS speed %.4f m/s" % hydrostatic_error(name, directory, end)
