@@ -27,7 +27,7 @@ model asks for (no `layers`), so that a model is one word:
 - cylinder2D: a dam break onto a cylinder of radius 0.1 m, 0.1 m above the floor (a curved convex obstacle), in a tank
   1 m high, with `outOfDomain remove` (the run-up sheet on the far wall throws a few particles past 1.6 m);
 - piston3D: a piston (a box 4 dx thick spanning the channel) at 1 Hz, 0.05 m, in a 3D channel 0.25 m deep;
-- floatingBox2D: a box 0.3 x 0.1 m of half the water's density released 0.02 m above its floating draft, a free
+- floatingBox2D: a box 0.3 x 0.1 m of half the water's density released 0.014 m above where it floats, a free
   body always on the correction (the row's model on the tank): where it comes to rest against Archimedes.
 
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
