@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sph {
 
@@ -51,8 +52,10 @@ void FunctionObjectSchedule<D>::reportErrorAgainstCost(const std::filesystem::pa
     const double rate = cost.wallSeconds > 0.0 ? static_cast<double>(cost.fluidParticles) * static_cast<double>(cost.steps) / cost.wallSeconds : 0.0;
     for (const Entry& entry : entries_)
         for (const ReportedError& error : entry.object->errors()) {
-            figures.push_back(fmt::format("{} {}: L1 {:.3e}, L2 {:.3e}, Linf {:.3e} ({})", entry.name, error.quantity, error.norms.l1, error.norms.l2,
-                                          error.norms.linf, error.normalisation));
+            figures.push_back(std::isnan(error.norms.l1)
+                                  ? fmt::format("{} {}: nothing compared ({})", entry.name, error.quantity, error.normalisation)
+                                  : fmt::format("{} {}: L1 {:.3e}, L2 {:.3e}, Linf {:.3e} ({})", entry.name, error.quantity, error.norms.l1,
+                                                error.norms.l2, error.norms.linf, error.normalisation));
             csv += fmt::format("{},{},{:.6e},{:.6e},{:.6e},\"{}\",{:.4f},{},{},{:.6e},{:.9g},{:.9g}\n", entry.name, error.quantity, error.norms.l1,
                                error.norms.l2, error.norms.linf, error.normalisation, cost.wallSeconds, cost.fluidParticles, cost.steps, rate,
                                startTime, cost.endTime);

@@ -17,15 +17,9 @@ WallLayoutFromModel<D>::WallLayoutFromModel(std::filesystem::path caseDirectory,
     : caseDirectory_(std::move(caseDirectory)), dx_(dx), properties_(properties) {}
 
 template <int D>
-WallLayout WallLayoutFromModel<D>::operator()(const std::string& name, const Dictionary& patch, std::string& note) {
-    const auto noModel = [&](const std::string& why) {
-        return FatalError(patch.where(), fmt::format("wall patch '{}' names no layers, so they are taken from its wall model, but {}; "
-                                                     "give the patch layers (and firstLayerOffset), or select its model in "
-                                                     "constant/boundaryProperties: {} {{ type dummyParticles; }}",
-                                                     name, why, name));
-    };
+const Dictionary* WallLayoutFromModel<D>::modelOf(const std::string& name) {
     if (!boundaryDict_) {
-        if (!std::filesystem::exists(caseDirectory_ / "constant/boundaryProperties")) throw noModel("the case has no constant/boundaryProperties");
+        if (!std::filesystem::exists(caseDirectory_ / "constant/boundaryProperties")) return nullptr;
         boundaryDict_ = readCaseDictionary(caseDirectory_, "constant/boundaryProperties");
         const Dictionary schemes = readCaseDictionary(caseDirectory_, "system/sphSchemes");
         const Dictionary& kernelDict = schemes.subDict("kernel");
@@ -33,10 +27,13 @@ WallLayout WallLayoutFromModel<D>::operator()(const std::string& name, const Dic
         const Kernel<D> kernel = selectByType(makeKernelRegistry<D>(), kernelDict, h_);
         support_ = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
     }
-    const Dictionary* modelDict = boundaryDict_->findSubDict(name);
-    if (!modelDict) throw noModel("constant/boundaryProperties has no entry for it");
-    const auto model = selectByType(makeBoundaryModelRegistry<D>(), *modelDict, *modelDict, modelContext(properties_, dx_, h_));
-    const std::string type = modelDict->get<std::string>("type");
+    return boundaryDict_->findSubDict(name);
+}
+
+template <int D>
+WallLayout WallLayoutFromModel<D>::layoutOf(const Dictionary& modelDict, std::string& note) const {
+    const auto model = selectByType(makeBoundaryModelRegistry<D>(), modelDict, modelDict, modelContext(properties_, dx_, h_));
+    const std::string type = modelDict.get<std::string>("type");
     if (!model->actsThroughWallParticles()) {
         note = fmt::format("1 layer on the wall surface, for the wall-force model {}", type);
         return {1, 0.0};
@@ -44,6 +41,32 @@ WallLayout WallLayoutFromModel<D>::operator()(const std::string& name, const Dic
     const int layers = model->layersToGenerate(support_, dx_);
     note = fmt::format("{} layers from dx/2 behind the wall, for {} with a kernel support of {:g} dx", layers, type, support_ / dx_);
     return {layers, 0.5};
+}
+
+template <int D>
+WallLayout WallLayoutFromModel<D>::operator()(const std::string& name, const Dictionary& patch, std::string& note) {
+    const Dictionary* modelDict = modelOf(name);
+    if (!modelDict)
+        throw FatalError(
+            patch.where(),
+            fmt::format("wall patch '{}' names no layers, so they are taken from its wall model, but {}; "
+                        "give the patch layers (and firstLayerOffset), or select its model in "
+                        "constant/boundaryProperties: {} {{ type dummyParticles; }}",
+                        name, boundaryDict_ ? "constant/boundaryProperties has no entry for it" : "the case has no constant/boundaryProperties",
+                        name));
+    return layoutOf(*modelDict, note);
+}
+
+template <int D>
+std::optional<double> WallLayoutFromModel<D>::offsetOf(const std::string& name, std::string& note) {
+    const Dictionary* modelDict = modelOf(name);
+    if (!modelDict) return std::nullopt;
+    std::string why;
+    const WallLayout layout = layoutOf(*modelDict, why);
+    if (layout.firstLayerOffset == 0.0)
+        note =
+            fmt::format("firstLayerOffset 0, the first layer on the wall surface, for the wall-force model {}", modelDict->get<std::string>("type"));
+    return layout.firstLayerOffset;
 }
 
 template class WallLayoutFromModel<1>;

@@ -132,7 +132,10 @@ std::vector<ReportedError> ReferenceSeries::errors() const {
     std::vector<ReportedError> result;
     for (std::size_t c = 0; c < quantities_.size(); ++c)
         result.push_back({quantities_[c], accumulators_[c].norms(scale_),
-                          fmt::format("scale {:g}, {} {}", scale_, accumulators_[c].count(), along_ == Along::Time ? "times" : "points")});
+                          accumulators_[c].count() > 0
+                              ? fmt::format("scale {:g}, {} {}", scale_, accumulators_[c].count(), along_ == Along::Time ? "times" : "points")
+                              : fmt::format("no {} of the run within the reference's [{:g}, {:g}]", along_ == Along::Time ? "time" : "point",
+                                            times_.front(), times_.back())});
     return result;
 }
 

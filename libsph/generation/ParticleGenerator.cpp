@@ -171,12 +171,23 @@ GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomai
     if (!boundaries) return walls;
     for (const std::string& name : boundaries->keywords()) {
         const Dictionary& patch = boundaries->subDict(name);
-        const WallLayout layout = wallLayout(patch, [&] {
-            std::string why;
-            const WallLayout fromModel = layoutFromModel(name, patch, why);
-            notes.push_back(fmt::format("wall patch '{}': {}", name, why));
-            return fromModel;
-        });
+        const auto noted = [&](const std::string& why) {
+            if (!why.empty()) notes.push_back(fmt::format("wall patch '{}': {}", name, why));
+        };
+        const WallLayout layout = wallLayout(
+            patch,
+            [&] {
+                std::string why;
+                const WallLayout fromModel = layoutFromModel(name, patch, why);
+                noted(why);
+                return fromModel;
+            },
+            [&] {
+                std::string why;
+                const std::optional<double> offset = layoutFromModel.offsetOf(name, why);
+                noted(why);
+                return offset;
+            });
         const WallPatchParticles<D> generated = generateWallPatch<D>(patch, lattice.dx, layout, shapeDomain);
         for (const std::string& note : generated.notes) notes.push_back(fmt::format("wall patch '{}': {}", name, note));
         for (std::size_t k = 0; k < generated.positions.size(); ++k) {

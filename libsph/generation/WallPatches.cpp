@@ -414,7 +414,8 @@ WallPatchParticles<2> ellipse(const Dictionary& patch, double dx, int layers, do
 
 }  // namespace
 
-WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel) {
+WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel,
+                      const std::function<std::optional<double>()>& offsetOfModel) {
     if (!patch.found("layers")) {
         WallLayout layout = fromModel();
         if (patch.found("firstLayerOffset")) layout.firstLayerOffset = patch.getNonNegative("firstLayerOffset");
@@ -424,7 +425,9 @@ WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>
     // A kernel support needs a few layers; thousands would be a slip that fills the memory.
     constexpr int maxLayers = 1000;
     if (layers < 1 || layers > maxLayers) patch.fail("layers", fmt::format("must be from 1 to {}, found {}", maxLayers, layers));
-    return {layers, patch.getNonNegativeOrDefault("firstLayerOffset", 0.5)};
+    if (patch.found("firstLayerOffset")) return {layers, patch.getNonNegative("firstLayerOffset")};
+    const std::optional<double> modelOffset = offsetOfModel ? offsetOfModel() : std::nullopt;
+    return {layers, modelOffset.value_or(0.5)};
 }
 
 namespace {
@@ -432,7 +435,9 @@ namespace {
 // The keywords every wall patch takes, after its own.
 std::vector<CoefficientDoc> withLayout(std::vector<CoefficientDoc> own) {
     own.push_back({"layers", "model", "layers of wall particles; left out: what the patch's model in constant/boundaryProperties needs"});
-    own.push_back({"firstLayerOffset", "0.5", "the first layer's distance behind the wall [dx] (0: on it)"});
+    own.push_back(
+        {"firstLayerOffset", "model",
+         "the first layer's distance behind the wall [dx] (0: on it); left out: the patch's model's, 0 for a wall-force model, 0.5 otherwise"});
     return own;
 }
 

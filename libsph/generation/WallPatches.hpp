@@ -1,8 +1,9 @@
 // Wall patches of system/generateParticlesDict: surfaces of wall particles, each particle with
 // a unit normal pointing into the fluid, its spacing along the wall, and its layer (0 nearest
-// the fluid). Layer k lies (k + firstLayerOffset) dx behind the wall surface; the default
-// offset 1/2 puts the surface halfway between fluid and wall particles (Adami et al. 2012).
-// A patch without `layers` takes the layout its wall model needs (driver/WallLayoutFromModel).
+// the fluid). Layer k lies (k + firstLayerOffset) dx behind the wall surface; the offset 1/2
+// puts the surface halfway between fluid and wall particles (Adami et al. 2012), 0 on the first
+// layer. A patch without `layers` takes the layout its wall model needs, one without
+// `firstLayerOffset` the offset (driver/WallLayoutFromModel; 1/2 for a patch with no model).
 //   boundaries
 //   {
 //       tank     { type boxWalls; min (0 0); max (1.6 0.8); layers 3; open (yMax); }  // 1D-3D
@@ -41,6 +42,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,10 +80,13 @@ struct WallLayout {
     double firstLayerOffset;  // in dx
 };
 
-// The patch's own `layers` and `firstLayerOffset` (default 1/2); without `layers`, the layout
-// `fromModel` gives (its model's, driver/WallLayoutFromModel), a firstLayerOffset named
-// in the patch still applying.
-WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel);
+// The patch's own `layers` and `firstLayerOffset`; without `layers`, the layout `fromModel` gives
+// (its model's, driver/WallLayoutFromModel), a firstLayerOffset named in the patch still
+// applying. With `layers` but no `firstLayerOffset`, the offset `offsetOfModel` gives (the
+// patch's model's, so that `layers 1` under a wall-force model lies on the wall surface), or 1/2
+// where it gives none (the case selects no model for the patch).
+WallLayout wallLayout(const Dictionary& patch, const std::function<WallLayout()>& fromModel,
+                      const std::function<std::optional<double>()>& offsetOfModel = {});
 
 // Adds the layers of a 2D path of straight faces through `points` (closed: a polygon, the last
 // point joined to the first), the normal on the left of the direction of travel for sign +1 and

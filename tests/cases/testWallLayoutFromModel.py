@@ -4,7 +4,7 @@ model is one word in constant/boundaryProperties and a rerun of generateParticle
 On hydrostaticTank2D (quintic kernel, hdx 1.2: support 3.6 dx): dummy particles and dynamic
 boundary get the 4 layers the case names, bit for bit; the deficiency correction gets the one
 layer on the wall that the docs advise (layers 1; firstLayerOffset 0;), bit for bit, and the
-solver accepts it and runs. Run by CTest with SPHKIT_BIN set to the build's binaries."""
+solver accepts it and runs; a patch that names `layers 1` and no offset gets the same. Run by CTest with SPHKIT_BIN set to the build's binaries."""
 import os
 import re
 import shutil
@@ -76,6 +76,27 @@ class WallLayoutFromModel(unittest.TestCase):
         solved = subprocess.run([os.path.join(BIN, "wcsph"), "-case", self.case], capture_output=True, text=True, env=ENV)
         self.assertEqual(solved.returncode, 0, solved.stdout[-2000:] + solved.stderr)
         self.assertTrue(os.path.exists(os.path.join(self.case, "0.01", "walls.vtu")))
+
+    def test_a_patch_that_names_its_layers_but_no_offset_takes_its_models_offset(self):
+        # `layers 1;` alone under a wall-force model lies on the wall surface, as the model needs
+        # (it lay dx/2 behind it, silently, before 2026-12-07); under dummy particles dx/2 behind.
+        for model, offset in (("deficiencyCorrection", "0"), ("dummyParticles", "0.5")):
+            with self.subTest(model=model):
+                edit(self.particles, "layers 4;", f"layers 1; firstLayerOffset {offset};")
+                self.assertEqual(generate(self.case).returncode, 0)
+                written = walls(self.case)
+                edit(self.particles, f"layers 1; firstLayerOffset {offset};", "layers 1;")
+                edit(self.models, "dummyParticles", model)
+                run = generate(self.case)
+                self.assertEqual(run.returncode, 0, run.stderr)
+                self.assertEqual(walls(self.case), written)
+                note = f"note: wall patch 'tank': firstLayerOffset 0, the first layer on the wall surface, for the wall-force model {model}"
+                if offset == "0":
+                    self.assertIn(note, run.stdout)
+                else:
+                    self.assertNotIn("firstLayerOffset", run.stdout)
+                edit(self.models, model, "dummyParticles")
+                edit(self.particles, "layers 1;", "layers 4;")
 
     def test_a_solid_thinner_than_twice_its_layers_holds_them_from_both_faces(self):
         # Quintic kernel, hdx 1.2: dummy particles need 4 layers. A post 6 dx thick holds 3

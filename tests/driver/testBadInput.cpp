@@ -153,8 +153,8 @@ TEST(BadInput, UnknownPeriodicDirection) {
 }
 
 TEST(BadInput, SolidBelowWhatTheSpacingResolves) {
-    // A triangle with legs 2.2 dx on the correction's one layer, dx/2 inside its faces: one
-    // particle is left inside it, whose plane the fluid on two sides lies behind.
+    // A triangle with legs of one spacing on the correction's one layer: its three particles,
+    // one on each corner, leave the fluid beside two of its faces behind the third's plane.
     const auto triangle = [](double legs) {
         const auto dir = copyCase("damBreak2D");
         setEntry(dir / "system/generateParticlesDict", "spacing", "0.0028575");
@@ -166,11 +166,11 @@ TEST(BadInput, SolidBelowWhatTheSpacingResolves) {
         return dir;
     };
     try {
-        sph::generateParticles(triangle(2.2), true);
-        ADD_FAILURE() << "a triangle of 2.2 dx generated";
+        sph::generateParticles(triangle(1.0), true);
+        ADD_FAILURE() << "a triangle of 1 dx generated";
     } catch (const sph::FatalError& e) {
         expectContains(e.what(),
-                       "wall patch 'block' has fluid on both sides: 2 of the 4 fluid particles next to it lie behind its wall particles' "
+                       "wall patch 'block' has fluid on both sides: 3 of the 8 fluid particles next to it lie behind its wall particles' "
                        "normals (a solid body this small is below what the spacing resolves");
     }
     EXPECT_NO_THROW(sph::generateParticles(triangle(8.0), true));

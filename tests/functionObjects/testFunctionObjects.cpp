@@ -193,6 +193,19 @@ TEST(ReferenceSeries, InterpolatesInTimeAndAccumulatesNormsOverTheOverlap) {
     EXPECT_DOUBLE_EQ(errors[0].norms.l1, 2.0 / 4.0);
     EXPECT_DOUBLE_EQ(errors[0].norms.l2, std::sqrt(5.0) / 4.0);
     EXPECT_DOUBLE_EQ(errors[0].norms.linf, 3.0 / 4.0);
+    EXPECT_EQ(errors[0].normalisation, "scale 4, 2 times");
+}
+
+TEST(ReferenceSeries, ARunOutsideTheReferencesTimesSaysSo) {
+    const auto dir = freshDirectory();
+    writeFile(dir / "ref.csv", "T,Z\n2,1\n3,1\n");
+    const Dictionary dict = Dictionary::fromString("file \"ref.csv\"; time T; columns (Z); scale 1;", "reference");
+    ReferenceSeries reference(dict, dir, {"front"});
+    reference.compare(1.0, {5.0});
+    const auto errors = reference.errors();
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_TRUE(std::isnan(errors[0].norms.l1));
+    EXPECT_EQ(errors[0].normalisation, "no time of the run within the reference's [2, 3]");
 }
 
 TEST(ReferenceSeries, ValueOffsetIsAddedAfterScaling) {

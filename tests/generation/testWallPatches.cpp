@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <optional>
 #include <type_traits>
 
 using namespace sph;
@@ -472,6 +473,21 @@ TEST(WallPatches, APatchWithoutLayersTakesItsModelsLayoutAndItsOwnOffset) {
     const WallLayout offset = wallLayout(Dictionary::fromString("type boxWalls; min (0 0); max (1 1); firstLayerOffset 0.25;", "tank"), fromModel);
     EXPECT_EQ(offset.layers, 4);
     EXPECT_EQ(offset.firstLayerOffset, 0.25);
+}
+
+TEST(WallPatches, APatchWithLayersButNoOffsetTakesItsModelsOffset) {
+    const auto fromModel = []() -> WallLayout { throw std::logic_error("the model's layout was asked for"); };
+    const auto wallForceModel = [] { return std::optional<double>(0.0); };
+    const auto noModel = [] { return std::optional<double>(); };
+    const auto notAsked = []() -> std::optional<double> { throw std::logic_error("the model's offset was asked for"); };
+    const Dictionary layersOnly = Dictionary::fromString("type boxWalls; min (0 0); max (1 1); layers 1;", "tank");
+    EXPECT_EQ(wallLayout(layersOnly, fromModel, wallForceModel).firstLayerOffset, 0.0);
+    EXPECT_EQ(wallLayout(layersOnly, fromModel, noModel).firstLayerOffset, 0.5);
+    EXPECT_EQ(wallLayout(layersOnly, fromModel).firstLayerOffset, 0.5);
+    const Dictionary named = Dictionary::fromString("type boxWalls; min (0 0); max (1 1); layers 1; firstLayerOffset 0.5;", "tank");
+    const WallLayout own = wallLayout(named, fromModel, notAsked);
+    EXPECT_EQ(own.layers, 1);
+    EXPECT_EQ(own.firstLayerOffset, 0.5);
 }
 
 TEST(WallPatches, AShapeOfAnotherDimensionOrAnUnknownOneIsRefusedAtItsType) {
