@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Eighteen cases the project does not ship, written as a user would (the shipped cases' schemes:
+"""Nineteen cases the project does not ship, written as a user would (the shipped cases' schemes:
 Wendland C2, hdx 1.3, continuity, artificial viscosity 0.02, Fourtakas diffusion, symplectic,
 Courant 0.2, c0 = 10 sqrt(g H)), each run with the boundary-integral deficiency correction,
 free-slip dummy particles and dynamic boundary particles; every patch's layout is the one its
@@ -28,7 +28,10 @@ model asks for (no `layers`), so that a model is one word:
   1 m high, with `outOfDomain remove` (the run-up sheet on the far wall throws a few particles past 1.6 m);
 - piston3D: a piston (a box 4 dx thick spanning the channel) at 1 Hz, 0.05 m, in a 3D channel 0.25 m deep;
 - floatingBox2D: a box 0.3 x 0.1 m of half the water's density released 0.014 m above where it floats, a free
-  body always on the correction (the row's model on the tank): where it comes to rest against Archimedes.
+  body always on the correction (the row's model on the tank): where it comes to rest against Archimedes;
+- sphere3D: a 3D dam break onto a sphere of radius 0.08 m (4 dx), 0.06 m above the floor, given as a
+  triangulated surface (an OBJ file of 5,120 triangles, as from a CAD export: a curved convex obstacle in
+  3D), with `outOfDomain remove` (its splash leaves the open tank).
 
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
@@ -112,15 +115,21 @@ CASES = {
                       "tank { type boxWalls; min (0 0); max (1 1); open (yMax); }\n"
                       "box { type polygon; points ((0.35 0.47) (0.65 0.47) (0.65 0.57) (0.35 0.57)); side right; }",
                       {"tank": "", "box": "motion { type freeBody; mass 15; momentOfInertia 0.125; centreOfMass (0.5 0.52); }"}, 4.0, 0.5),
+    "sphere3D": (3, 0.02, "{ min (-0.1 -0.1 -0.1); max (0.9 0.5 0.9); }", "column { type box; min (0 0 0); max (0.24 0.4 0.3); }",
+                 "tank { type boxWalls; min (0 0 0); max (0.8 0.4 0.6); open (zMax); }\n"
+                 "sphere { type surface; file \"constant/geometry/sphere.obj\"; fluidInside no; }", {"tank": "", "sphere": ""}, 1.0, 0.3),
 }
 STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
 # controlDict entries beyond the common ones: the cylinder's run-up sheet climbs the far wall past 1.6 m
-# in a few particles, which DualSPHysics would exclude; the count removed is reported.
-CONTROL = {"cylinder2D": "outOfDomain remove;\n"}
+# in a few particles, and the sphere's splash leaves its open tank, which DualSPHysics would exclude;
+# the count removed is reported.
+CONTROL = {"cylinder2D": "outOfDomain remove;\n", "sphere3D": "outOfDomain remove;\n"}
 # Function objects beyond wallPenetrations, and patches on a model of their own whatever the row's: a free
 # body's loads come from a wall-force model, so the floating box is always on the correction.
 FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInterval 0.01; }\n"}
 MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"}}
+# Files a case reads beyond its dictionaries, written by a function of none.
+FILES = {"sphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.5, 0.2, 0.14), 0.08, 4)}}
 # The floating box: its mass per unit length and width, and the fluid's density.
 BOX_MASS, BOX_WIDTH, RHO = 15.0, 0.3, 1000.0
 
@@ -129,6 +138,31 @@ def write(path, text):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
         f.write(text)
+
+
+def icosphere(centre, radius, subdivisions):
+    """An OBJ text of a sphere: an icosahedron whose triangles are split in four, the new vertices
+    pushed out to the sphere, `subdivisions` times (4: 2,562 vertices, 5,120 triangles)."""
+    t = (1 + 5 ** 0.5) / 2
+    vertices = [np.array(v, float) for v in ((-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+                                             (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1))]
+    vertices = [v / np.linalg.norm(v) for v in vertices]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6), (7, 1, 8),
+             (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(subdivisions):
+        middles = {}
+
+        def middle(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middles:
+                v = vertices[a] + vertices[b]
+                vertices.append(v / np.linalg.norm(v))
+                middles[key] = len(vertices) - 1
+            return middles[key]
+        faces = [f for a, b, c in faces for f in ((a, middle(a, b), middle(c, a)), (b, middle(b, c), middle(a, b)),
+                                                  (c, middle(c, a), middle(b, c)), (middle(a, b), middle(b, c), middle(c, a)))]
+    lines = ["v %.9g %.9g %.9g" % tuple(np.asarray(centre) + radius * v) for v in vertices]
+    return "\n".join(lines + ["f %d %d %d" % (a + 1, b + 1, c + 1) for a, b, c in faces]) + "\n"
 
 
 def prepare(work, name, model):
@@ -142,6 +176,8 @@ def prepare(work, name, model):
     write(f"{directory}/system/sphSchemes", "kernel { type wendlandC2; hdx 1.3; }\ndensity { type continuity; }\n"
           "viscosity { type artificial; alpha 0.02; }\ndensityDiffusion { type fourtakas; delta 0.1; }\n")
     write(f"{directory}/system/timeIntegration", "integrator { type symplectic; }\ncourant 0.2;\n")
+    for path, text in FILES.get(name, {}).items():
+        write(os.path.join(directory, path), text())
     gravity = "(0 -9.81)" if dimension == 2 else "(0 0 -9.81)"
     write(f"{directory}/constant/fluidProperties",
           f"rho0 1000;\ngravity {gravity};\nequationOfState {{ type tait; gamma 7; c0FromHeight {{ coefficient 10; height {depth}; }} }}\n")
