@@ -9,6 +9,7 @@ itself, without start-up; the case writes only at its end time, and that write (
 Usage: utilities/benchmark/benchmark.py [--case damBreak2D] [--boundary MODEL] [--threads 1 2] [--ranks 2] [--scaling]
                                          [--factors 2 1 0.5] [--end-time T] [--repeat N] [--busy]
                                          [--roofline [--peak-gflops G] [--bandwidth B]] [--work DIR]
+                                         [--dualsphysics DIR --dualsphysics-case XML]
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; work in build/benchmark/ or --work).
 Cases: utilities/benchmark/<case>/: damBreak2D (DualSPHysics' standard 2D dam break, 20,000
 fluid particles, 0.25 s) and damBreak3D (DualSPHysics' CaseDambreak, 47,600 fluid + 22,440
@@ -29,14 +30,24 @@ a shared machine has one: the last column is then the slowdown that the solver's
 from waiting for one another there (the target of doc/performance.md: 1.3 at most).
 --roofline adds, for each case's median 1-thread run, where its stages sit under the roofline of
 one core (roofline.py: the model, and the roofs measured or given by --peak-gflops, --bandwidth).
+--dualsphysics DIR --dualsphysics-case XML adds, for each thread count, runs of DualSPHysics' CPU
+solver on the same thread count, taking turns with sphkit's: DIR holds DualSPHysics' GenCase and
+DualSPHysics*CPU* executables, XML is DualSPHysics' definition of the same case at the same spacing
+(CaseDambreak_Def.xml of its examples/main/01_DamBreak for damBreak3D), which GenCase turns into its
+case once; the solver runs it to the same end time, writing no particle files (-sv:none). A table
+after the first compares the whole processes' wall times (start-up included for both, as nothing
+else is timed the same way in both) and gives sphkit's time over DualSPHysics'. Never needed by the
+tests, which run a stand-in.
 """
 import argparse
+import glob
 import os
 import re
 import shutil
 import statistics
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -103,11 +114,13 @@ def run(directory, threads, end_time=None, ranks=None):
             environment.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     log_path = os.path.join(directory, "log.wcsph.%s" % ("%dranks" % ranks if ranks else threads))
     with open(log_path, "w") as log:
+        started = time.perf_counter()
         try:
             process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, env=environment)
         except FileNotFoundError:
             raise SystemExit("benchmark: --ranks needs %s (OpenMPI's mpirun; $MPIEXEC names another)" % MPIEXEC)
         _, status, usage = os.wait4(process.pid, 0)
+        process_seconds = time.perf_counter() - started
     with open(log_path) as f:
         log = f.read()
     if status != 0:
@@ -122,8 +135,70 @@ def run(directory, threads, end_time=None, ranks=None):
         peak = float(re.search(r"Peak memory of a rank: largest ([0-9.]+) MiB", log).group(1)) * 2**20
     evaluations = int(re.search(r"right-hand-side evaluations\s+(\d+)", log).group(1))
     radius = float(re.search(r"support radius ([0-9.e+-]+)", log).group(1))
-    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "peak": peak, "evaluations": evaluations, "radius": radius,
-            "stages": roofline.stage_seconds(log), "unmodelled": roofline.unmodelled(log)}
+    return {"fluid": fluid, "walls": walls, "steps": steps, "wall": timed, "process": process_seconds, "peak": peak, "evaluations": evaluations,
+            "radius": radius, "stages": roofline.stage_seconds(log), "unmodelled": roofline.unmodelled(log)}
+
+
+def dualsphysics_executables(directory):
+    """GenCase and the CPU solver in DualSPHysics' binary folder (the linux64 builds where there are several)."""
+    def executable(pattern):
+        found = sorted(path for path in glob.glob(os.path.join(directory, pattern)) if os.path.isfile(path) and os.access(path, os.X_OK))
+        preferred = [path for path in found if "linux64" in os.path.basename(path)]
+        return (preferred or found or [None])[0]
+    gencase, solver = executable("GenCase*"), executable("DualSPHysics*CPU*")
+    if not gencase or not solver:
+        raise SystemExit("benchmark: --dualsphysics %s: no executable GenCase* and DualSPHysics*CPU* there (DualSPHysics' bin/linux folder)"
+                         % directory)
+    return gencase, solver
+
+
+def dualsphysics_environment(directory):
+    """DualSPHysics' executables load their libraries from their own folder."""
+    libraries = os.environ.get("LD_LIBRARY_PATH")
+    return dict(os.environ, LD_LIBRARY_PATH=directory + (":" + libraries if libraries else ""))
+
+
+def prepare_dualsphysics(args, work):
+    """DualSPHysics' case made by GenCase from the XML: the solver's input, as a path without extension."""
+    definition = os.path.abspath(args.dualsphysics_case)
+    if not definition.endswith(".xml") or not os.path.isfile(definition):
+        raise SystemExit("benchmark: --dualsphysics-case %s: not an XML file (DualSPHysics' case definition, NAME_Def.xml)" % args.dualsphysics_case)
+    gencase, _ = dualsphysics_executables(args.dualsphysics)
+    out = os.path.join(work, "dualsphysics")
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    name = os.path.join(out, re.sub(r"_Def$", "", os.path.basename(definition)[:-4]))
+    log_path = os.path.join(out, "log.GenCase")
+    with open(log_path, "w") as log:
+        status = subprocess.run([gencase, definition[:-4], name, "-save:none"], stdout=log, stderr=subprocess.STDOUT,
+                                env=dualsphysics_environment(args.dualsphysics)).returncode
+    if status != 0:
+        raise SystemExit("benchmark: GenCase failed on %s, see %s" % (definition, log_path))
+    return name
+
+
+def run_dualsphysics(args, name, threads, end_time):
+    """One run of DualSPHysics' CPU solver on `threads` threads to `end_time`, writing no particles: its wall time."""
+    _, solver = dualsphysics_executables(args.dualsphysics)
+    out = os.path.dirname(name)
+    log_path = os.path.join(out, "log.DualSPHysics.%d" % threads)
+    command = [solver, "-cpu", "-ompthreads:%d" % threads, name, out, "-dirdataout", "data", "-sv:none", "-svres:0",
+               "-tmax:%g" % end_time, "-tout:%g" % end_time]
+    with open(log_path, "w") as log:
+        started = time.perf_counter()
+        status = subprocess.run(command, stdout=log, stderr=subprocess.STDOUT, env=dualsphysics_environment(args.dualsphysics)).returncode
+        seconds = time.perf_counter() - started
+    if status != 0:
+        raise SystemExit("benchmark: DualSPHysics failed, see %s" % log_path)
+    return seconds
+
+
+def end_time_of(directory, end_time):
+    """The simulated time a run of the case covers: --end-time, or its controlDict's."""
+    if end_time is not None:
+        return end_time
+    with open(os.path.join(directory, "system/controlDict")) as f:
+        return float(re.search(r"(?m)^endTime\s+([^;\s]+)\s*;", f.read()).group(1))
 
 
 def start_busy_process():
@@ -147,6 +222,8 @@ def main():
     parser.add_argument("--roofline", action="store_true", help="where each stage of the 1-thread runs sits under one core's roofline")
     parser.add_argument("--peak-gflops", type=float, help="one core's peak double GFlop/s (default: 16 flops a cycle at /proc/cpuinfo's clock)")
     parser.add_argument("--bandwidth", type=float, help="one core's memory bandwidth in GB/s (default: measured, a numpy copy)")
+    parser.add_argument("--dualsphysics", metavar="DIR", help="DualSPHysics' folder of executables (GenCase, DualSPHysics*CPU*): runs it beside")
+    parser.add_argument("--dualsphysics-case", metavar="XML", help="DualSPHysics' definition of the same case (with --dualsphysics)")
     args = parser.parse_args()
     if args.repeat < 1:
         raise SystemExit("benchmark: --repeat must be at least 1, not %d" % args.repeat)
@@ -157,6 +234,10 @@ def main():
     if args.roofline and args.peak_gflops is None and roofline.core_peak_gflops() is None:
         raise SystemExit("benchmark: --roofline: /proc/cpuinfo gives no clock; give --peak-gflops")
     factors = args.factors or ([2.0, 1.0, 0.5] if args.scaling else [1.0])
+    if bool(args.dualsphysics) != bool(args.dualsphysics_case):
+        raise SystemExit("benchmark: --dualsphysics and --dualsphysics-case go together (its executables' folder and its definition of the case)")
+    if args.dualsphysics and len(factors) > 1:
+        raise SystemExit("benchmark: --dualsphysics compares one spacing, its case's: give one --factors, not %d" % len(factors))
     busy = start_busy_process() if args.busy else None
     try:
         peaks, medians = measure(args, factors)
@@ -215,14 +296,18 @@ def measure(args, factors):
     print("| case | fluid + wall particles | threads | steps | time loop [s] | runs [s] | fluid particle-steps/s | all particle-steps/s | peak memory | bytes per particle | time / 1-thread time%s |"
           % (" (busy core)" if args.busy else ""))
     print("|---|---|---|---|---|---|---|---|---|---|---|")
-    peaks, medians = [], []
+    peaks, medians, against = [], [], []
     configurations = [(threads, None) for threads in args.threads] + [(1, ranks) for ranks in args.ranks]
     for factor in factors:
         directory = prepare(args.case, factor, args.work, args.boundary)
+        dualsphysics_case = prepare_dualsphysics(args, args.work) if args.dualsphysics else None
         runs = {configuration: [] for configuration in configurations}
+        dualsphysics_runs = {threads: [] for threads in args.threads}
         for _ in range(args.repeat):
             for threads, ranks in configurations:
                 runs[threads, ranks].append(run(directory, threads, args.end_time, ranks))
+                if dualsphysics_case and not ranks:
+                    dualsphysics_runs[threads].append(run_dualsphysics(args, dualsphysics_case, threads, end_time_of(directory, args.end_time)))
         one_thread = statistics.median(r["wall"] for r in runs[1, None]) if (1, None) in runs else None
         for threads, ranks in configurations:
             times = sorted(r["wall"] for r in runs[threads, ranks])
@@ -242,6 +327,16 @@ def measure(args, factors):
         if (1, None) in runs:
             ones = runs[1, None]
             medians.append(("%s dx x%g" % (args.case, factor), directory, sorted(ones, key=lambda r: r["wall"])[(len(ones) - 1) // 2]))
+        if dualsphysics_case:
+            against += [("%s dx x%g" % (args.case, factor), threads, sorted(r["process"] for r in runs[threads, None]), sorted(dualsphysics_runs[threads]))
+                        for threads in args.threads]
+    if against:
+        print("\n| case | threads | sphkit, whole process [s] (runs) | DualSPHysics, whole process [s] (runs) | sphkit / DualSPHysics |")
+        print("|---|---|---|---|---|")
+        for label, threads, ours, theirs in against:
+            print("| %s | %d | %.3g (%.3g-%.3g) | %.3g (%.3g-%.3g) | %.2f |" % (
+                label, threads, statistics.median(ours), ours[0], ours[-1], statistics.median(theirs), theirs[0], theirs[-1],
+                statistics.median(ours) / statistics.median(theirs)))
     return peaks, medians
 
 
