@@ -337,11 +337,20 @@ def flow_case(case, model, patch, layout, spacing=None, edits=(), layers=4):
     return directory
 
 
+def first_figures(printed):
+    """The numbers of a comparison script's first case line (the line after its first comment):
+    a script may print further blocks after it (comparePressure.py: the second digitisation, the
+    experiment at three sensors), whose lines are not the first block's columns."""
+    lines = printed.strip().splitlines()
+    first = next(k for k, line in enumerate(lines) if line.startswith("#"))
+    return [float(v) for v in lines[first + 1].split()[1:]]
+
+
 def compare(script, directory, *options):
-    """Runs a case's comparison script on one directory; returns its last output line's numbers."""
+    """Runs a case's comparison script on one directory; returns its first case line's numbers."""
     result = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "cases", script[0], script[1]), *options, directory], capture_output=True,
                             text=True, check=True)
-    return [float(v) for v in result.stdout.strip().splitlines()[-1].split()[1:]]
+    return first_figures(result.stdout)
 
 
 def dam_break_row(model, patch, layout, resolution):
