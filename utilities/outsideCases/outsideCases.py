@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Nineteen cases the project does not ship, written as a user would (the shipped cases' schemes:
+"""Twenty cases the project does not ship, written as a user would (the shipped cases' schemes:
 Wendland C2, hdx 1.3, continuity, artificial viscosity 0.02, Fourtakas diffusion, symplectic,
 Courant 0.2, c0 = 10 sqrt(g H)), each run with the boundary-integral deficiency correction,
 free-slip dummy particles and dynamic boundary particles; every patch's layout is the one its
@@ -31,7 +31,10 @@ model asks for (no `layers`), so that a model is one word:
   body always on the correction (the row's model on the tank): where it comes to rest against Archimedes;
 - sphere3D: a 3D dam break onto a sphere of radius 0.08 m (4 dx), 0.06 m above the floor, given as a
   triangulated surface (an OBJ file of 5,120 triangles, as from a CAD export: a curved convex obstacle in
-  3D), with `outOfDomain remove` (its splash leaves the open tank).
+  3D), with `outOfDomain remove` (its splash leaves the open tank);
+- oscillatingSphere3D: a sphere of radius 0.06 m (3 dx) from an OBJ of 1,280 triangles, submerged at
+  mid-depth in still water 0.3 m deep, oscillating 0.05 m along the tank at 1 Hz (a curved wall moving
+  through the fluid in 3D): its in-line force against potential flow's added mass.
 
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
@@ -118,6 +121,10 @@ CASES = {
     "sphere3D": (3, 0.02, "{ min (-0.1 -0.1 -0.1); max (0.9 0.5 0.9); }", "column { type box; min (0 0 0); max (0.24 0.4 0.3); }",
                  "tank { type boxWalls; min (0 0 0); max (0.8 0.4 0.6); open (zMax); }\n"
                  "sphere { type surface; file \"constant/geometry/sphere.obj\"; fluidInside no; }", {"tank": "", "sphere": ""}, 1.0, 0.3),
+    "oscillatingSphere3D": (3, 0.02, "{ min (-0.1 -0.1 -0.1); max (0.7 0.4 0.6); }", "water { type box; min (0 0 0); max (0.6 0.3 0.3); }",
+                            "tank { type boxWalls; min (0 0 0); max (0.6 0.3 0.5); open (zMax); }\n"
+                            "sphere { type surface; file \"constant/geometry/sphere.obj\"; fluidInside no; }",
+                            {"tank": "", "sphere": "motion { type oscillation; amplitude (0.05 0 0); frequency 1; rampTime 0.5; }"}, 3.0, 0.3),
 }
 STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
 # controlDict entries beyond the common ones: the cylinder's run-up sheet climbs the far wall past 1.6 m
@@ -126,10 +133,12 @@ STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
 CONTROL = {"cylinder2D": "outOfDomain remove;\n", "sphere3D": "outOfDomain remove;\n"}
 # Function objects beyond wallPenetrations, and patches on a model of their own whatever the row's: a free
 # body's loads come from a wall-force model, so the floating box is always on the correction.
-FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInterval 0.01; }\n"}
+FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInterval 0.01; }\n",
+             "oscillatingSphere3D": "    sphere { type forces; patches (sphere); executeInterval 0.005; }\n"}
 MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"}}
 # Files a case reads beyond its dictionaries, written by a function of none.
-FILES = {"sphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.5, 0.2, 0.14), 0.08, 4)}}
+FILES = {"sphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.5, 0.2, 0.14), 0.08, 4)},
+         "oscillatingSphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.3, 0.15, 0.15), 0.06, 3)}}
 # The floating box: its mass per unit length and width, and the fluid's density.
 BOX_MASS, BOX_WIDTH, RHO = 15.0, 0.3, 1000.0
 
@@ -228,6 +237,20 @@ def floating_error(directory, end):
     return last[:, 2].mean(), rest, (last[:, 2].mean() - rest) / dx, last[:, 2].std(), last[:, 3].mean()
 
 
+def oscillating_force(directory, end):
+    """The oscillating sphere's in-line force over the last second: the amplitude of its first
+    harmonic at the motion's 1 Hz (a least-squares fit of a + b sin + c cos), against the added-mass
+    force of potential flow about a sphere far from walls, C_a rho V A omega^2 with C_a = 1/2 (the
+    tank's walls, the free surface 1.5 radii above and the drag at KC = 2.6 add to it)."""
+    forces = np.loadtxt(glob.glob(os.path.join(directory, "postProcessing", "sphere", "*", "forces.dat"))[0])
+    last = forces[forces[:, 0] >= end - 1.0]
+    omega = 2 * np.pi
+    basis = np.column_stack([np.ones(len(last)), np.sin(omega * last[:, 0]), np.cos(omega * last[:, 0])])
+    (_, b, c), *_ = np.linalg.lstsq(basis, last[:, 1], rcond=None)
+    added = 0.5 * RHO * 4 / 3 * np.pi * 0.06 ** 3 * 0.05 * omega ** 2
+    return np.hypot(b, c), added
+
+
 def run(work, name, model):
     directory = prepare(work, name, model)
     start = time.time()
@@ -243,6 +266,9 @@ def run(work, name, model):
         figure = f"{removed[-1]} fluid particles left the domain (removed)"
     if name == "floatingBox2D" and result.returncode == 0:
         figure = "box centre over the last 1 s: %.4f m against %.4f m at rest (%+.2f dx), heave std %.4f m, angle %.4f rad" % floating_error(directory, CASES[name][6])
+    if name == "oscillatingSphere3D" and result.returncode == 0:
+        figure = "in-line force over the last 1 s, first harmonic: %.3f N (added mass of potential flow, far from walls: %.3f N)" % \
+            oscillating_force(directory, CASES[name][6])
     if name in STILL_WATER and result.returncode == 0:
         end = CASES[name][6]
         figure = f"at t = {end:g} s: pressure error L2 %.4f, max %.4f rho g H; RMS speed %.4f m/s" % hydrostatic_error(name, directory, end)
