@@ -39,9 +39,9 @@ model asks for (no `layers`), so that a model is one word:
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
 still-water cases the pressure's error against hydrostatic at the end (L2 and max over rho g H,
-below the top 0.1 m) and the fluid's RMS speed then, and the particles removed as they left the
-domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 45 minutes on 2 cores).
+below the top 0.1 m) and the fluid's RMS speed then, the floating box's rest, the oscillating
+sphere's in-line force, and the particles removed as they left the domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...]
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 50 minutes on 2 cores).
 --markdown writes the table, keeping the rows of the cases not run; --check compares the runs'
 outcomes, counts and figures with a table's (not the wall times) and exits 1 where one differs
 (CTest's DocumentedFigures.outsideCases, label long).
