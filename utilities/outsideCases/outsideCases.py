@@ -62,6 +62,8 @@ BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 MODELS = {"deficiencyCorrectionBoundaryIntegral": "correction", "dummyParticles": "dummy", "dynamicBoundary": "dynamic"}
 
 # name: (dimension, dx, domain, fluid regions, wall patches, {patch: motion}, end time, depth H)
+# The oscillating sphere: its radius, the motion's amplitude and frequency.
+SPHERE_RADIUS, SPHERE_AMPLITUDE, SPHERE_FREQUENCY = 0.06, 0.05, 1.0
 CASES = {
     "wedge2D": (2, 0.01, "{ min (-0.1 -0.1); max (2.1 1.6); }", "column { type box; min (0 0); max (0.5 0.5); }",
                 "tank { type boxWalls; min (0 0); max (2 1.5); open (yMax); }\n"
@@ -124,7 +126,8 @@ CASES = {
     "oscillatingSphere3D": (3, 0.02, "{ min (-0.1 -0.1 -0.1); max (0.7 0.4 0.6); }", "water { type box; min (0 0 0); max (0.6 0.3 0.3); }",
                             "tank { type boxWalls; min (0 0 0); max (0.6 0.3 0.5); open (zMax); }\n"
                             "sphere { type surface; file \"constant/geometry/sphere.obj\"; fluidInside no; }",
-                            {"tank": "", "sphere": "motion { type oscillation; amplitude (0.05 0 0); frequency 1; rampTime 0.5; }"}, 3.0, 0.3),
+                            {"tank": "", "sphere": "motion { type oscillation; amplitude (%g 0 0); frequency %g; rampTime 0.5; }" % (
+                                SPHERE_AMPLITUDE, SPHERE_FREQUENCY)}, 3.0, 0.3),
 }
 STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
 # controlDict entries beyond the common ones: the cylinder's run-up sheet climbs the far wall past 1.6 m
@@ -138,7 +141,7 @@ FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInte
 MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"}}
 # Files a case reads beyond its dictionaries, written by a function of none.
 FILES = {"sphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.5, 0.2, 0.14), 0.08, 4)},
-         "oscillatingSphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.3, 0.15, 0.15), 0.06, 3)}}
+         "oscillatingSphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.3, 0.15, 0.15), SPHERE_RADIUS, 3)}}
 # The floating box: its mass per unit length and width, and the fluid's density.
 BOX_MASS, BOX_WIDTH, RHO = 15.0, 0.3, 1000.0
 
@@ -239,15 +242,15 @@ def floating_error(directory, end):
 
 def oscillating_force(directory, end):
     """The oscillating sphere's in-line force over the last second: the amplitude of its first
-    harmonic at the motion's 1 Hz (a least-squares fit of a + b sin + c cos), against the added-mass
+    harmonic at the motion's frequency (a least-squares fit of a + b sin + c cos), against the added-mass
     force of potential flow about a sphere far from walls, C_a rho V A omega^2 with C_a = 1/2 (the
     tank's walls, the free surface 1.5 radii above and the drag at KC = 2.6 add to it)."""
     forces = np.loadtxt(glob.glob(os.path.join(directory, "postProcessing", "sphere", "*", "forces.dat"))[0])
     last = forces[forces[:, 0] >= end - 1.0]
-    omega = 2 * np.pi
+    omega = 2 * np.pi * SPHERE_FREQUENCY
     basis = np.column_stack([np.ones(len(last)), np.sin(omega * last[:, 0]), np.cos(omega * last[:, 0])])
     (_, b, c), *_ = np.linalg.lstsq(basis, last[:, 1], rcond=None)
-    added = 0.5 * RHO * 4 / 3 * np.pi * 0.06 ** 3 * 0.05 * omega ** 2
+    added = 0.5 * RHO * 4 / 3 * np.pi * SPHERE_RADIUS ** 3 * SPHERE_AMPLITUDE * omega ** 2
     return np.hypot(b, c), added
 
 
