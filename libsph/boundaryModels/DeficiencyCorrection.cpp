@@ -63,6 +63,10 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
             penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
             penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
             penalty_.springDistance = repulsion->getPositiveOrDefault("springDistance", 0.5 * penalty_.distance);
+            const std::string closingSpeed = repulsion->getOrDefault<std::string>("closingSpeed", "each");
+            if (closingSpeed != "each" && closingSpeed != "mean")
+                repulsion->fail("closingSpeed", "expected each (each wall particle's, the default) or mean, found '" + closingSpeed + "'");
+            penalty_.meanClosingSpeed = closingSpeed == "mean";
             if (penalty_.springDistance > penalty_.distance)
                 repulsion->fail("springDistance",
                                 fmt::format("must not exceed distance {:g}, found {:g}", penalty_.distance, penalty_.springDistance));
@@ -109,8 +113,8 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
     return text + ", repulsion " +
            (repulsion_ ? sph::describe(*repulsion_)
-                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}", penalty_.K, penalty_.zeta,
-                                     penalty_.distance, penalty_.springDistance));
+                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}{}", penalty_.K, penalty_.zeta,
+                                     penalty_.distance, penalty_.springDistance, penalty_.meanClosingSpeed ? ", closingSpeed mean" : ""));
 }
 
 template <int D, class Weighting>
@@ -310,8 +314,9 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
         if (!(weightSum_[i] > 0.0)) continue;
         const double inverseSum = Weighting::normalised ? 1.0 / weightSum_[i] : 1.0;
         const double ownPressureTerm = p[i] / (rho[i] * rho[i]);
-        Vec<D> sum = Vec<D>::Zero(), penalty = Vec<D>::Zero();
-        double rate = 0.0, areaWeight = 0.0;
+        Vec<D> sum = Vec<D>::Zero();
+        WallDistancePenalty::Sums<D> penalty;
+        double rate = 0.0;
         const PairRange range = pairRanges_[i];
         const WallPair* pairs = pairsPerThread_[range.thread].data();
         // The partner's side of the wall is the nearest wall particle's. Fluid beyond a convex
@@ -343,14 +348,12 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
                 sum += (shape * push[j]) * d;
             }
             if constexpr (DistancePartner) {
-                if (const double rDotN = r.dot(normal[j]); crossed || rDotN >= 0.0) {
-                    areaWeight += W * area[j];
-                    penalty += (W * area[j] * penalty_.term(rDotN, -(v[i] - vWall[j]).dot(normal[j]))) * normal[j];
-                }
+                if (const double rDotN = r.dot(normal[j]); crossed || rDotN >= 0.0)
+                    penalty_.add(penalty, W * area[j], rDotN, -(v[i] - vWall[j]).dot(normal[j]), normal[j]);
             }
         }
         if constexpr (DistancePartner)
-            a[i] += areaWeight > 0.0 ? Vec<D>(sum + penalty / areaWeight) : sum;
+            a[i] += penalty.weight > 0.0 ? Vec<D>(sum + penalty_.acceleration(penalty)) : sum;
         else
             a[i] += sum;
         correction[i] += sum;

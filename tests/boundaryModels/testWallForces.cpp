@@ -386,6 +386,67 @@ TEST(DeficiencyCorrection, WallDistancePenaltyIsHandComputedAndZeroFromTheFirstR
     EXPECT_NEAR(damper.x(), 0.0, 1e-12 * 160.0);
 }
 
+TEST(DeficiencyCorrection, WallDistanceDamperOnTheMeanClosingSpeedDoesNotDragFluidSlidingPastACurvedWall) {
+    // A cylinder of radius 3 dx in one layer (19 wall particles, radial normals), fluid 0.3 dx off
+    // its surface on the x axis, the spring off. Sliding along the wall at 0.2 it closes on the
+    // wall particles ahead of it and leaves those behind as fast: the damper on each one's closing
+    // speed (the default) drags it, zeta (c0/d0) sum_j A W g_j^2 max(0, u_j) n_j / sum_j A W; their
+    // mean (closingSpeed mean, weighted g_j^2) is nil, and so is its damper. Closing at 0.2 along
+    // -x: zeta (c0/d0) max(0, u) sum_j A W g_j^2 n_j / sum_j A W, u the mean of 0.2 n_j . x, c0 = 10.
+    // A wall moving with the fluid: nothing.
+    const double h = 1.3 * dx, radius = 3 * dx, area = 2 * M_PI * radius / 19;
+    const CubicSplineMonaghanLattanzio1985<2> kernel(h);
+    std::vector<Vec<2>> walls, normals;
+    for (int k = 0; k < 19; ++k) {
+        normals.push_back(Vec<2>(std::cos(2 * M_PI * k / 19), std::sin(2 * M_PI * k / 19)));
+        walls.push_back(radius * normals.back());
+    }
+    const Vec<2> x(radius + 0.3 * dx, 0.0);
+    const auto damperOn = [&](const Vec<2>& velocity, const Vec<2>& wallVelocity, const char* closingSpeed = "mean") {
+        auto wallParticles = wallSet<2>(walls, Vec<2>(0, 1), area);  // spacing: the area in 2D
+        wallParticles[fields::normal] = normals;
+        auto fluid = fluidSet<2>({x});
+        fluid[fields::velocity][0] = velocity;
+        auto s =
+            system<2>(std::move(fluid), std::move(wallParticles),
+                      std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                          dictionary(fmt::format(
+                              "type deficiencyCorrectionBoundaryIntegral; repulsion {{ type wallDistance; K 0; closingSpeed {}; }}", closingSpeed)),
+                          contextFor(h), "c"),
+                      h, Vec<2>(-1, -1), Vec<2>(1, 1));
+        for (auto& v : s->walls[fields::velocity]) v = wallVelocity;
+        s->evaluateRates(0.0);
+        return Vec<2>(s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0]);
+    };
+    // The damper by hand over the wall particles the fluid lies in front of, with each one's
+    // closing speed or their mean.
+    const auto damperByHand = [&](const Vec<2>& velocity, bool ownClosingSpeed) {
+        Vec<2> sum = Vec<2>::Zero();
+        double weight = 0.0, gapWeight = 0.0, closing = 0.0;
+        for (std::size_t j = 0; j < walls.size(); ++j) {
+            const double rDotN = (x - walls[j]).dot(normals[j]);
+            if (rDotN < 0.0) continue;
+            const double W = kernel.value((x - walls[j]).norm()) * area, gap = std::max(0.0, 1.0 - rDotN / (0.5 * dx));
+            const double u = -velocity.dot(normals[j]);
+            sum += W * gap * gap * (ownClosingSpeed ? std::max(0.0, u) : 1.0) * normals[j];
+            weight += W, gapWeight += W * gap * gap, closing += W * gap * gap * u;
+        }
+        return Vec<2>(10.0 / (0.5 * dx) * (ownClosingSpeed ? 1.0 : std::max(0.0, closing / gapWeight)) * sum / weight);
+    };
+    const Vec<2> sliding(0.0, 0.2);
+    const Vec<2> drag = damperOn(sliding, Vec<2>::Zero(), "each"), dragByHand = damperByHand(sliding, true);
+    ASSERT_GT(dragByHand.norm(), 1.0);
+    EXPECT_NEAR(drag.x(), dragByHand.x(), 1e-12 * dragByHand.norm());
+    EXPECT_NEAR(drag.y(), dragByHand.y(), 1e-12 * dragByHand.norm());
+    EXPECT_LT(damperOn(sliding, Vec<2>::Zero()).norm(), 1e-9 * dragByHand.norm());
+    const Vec<2> closingVelocity(-0.2, 0.0);
+    const Vec<2> closing = damperOn(closingVelocity, Vec<2>::Zero()), expected = damperByHand(closingVelocity, false);
+    ASSERT_GT(expected.x(), 1.0);
+    EXPECT_NEAR(closing.x(), expected.x(), 1e-12 * expected.norm());
+    EXPECT_NEAR(closing.y(), 0.0, 1e-12 * expected.norm());
+    EXPECT_LT(damperOn(Vec<2>(-0.2, 0.1), Vec<2>(-0.2, 0.1)).norm(), 1e-9 * expected.norm());
+}
+
 TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
     // The spring within d_s = dx/4 only: nothing at 0.3 dx (inside d0 = dx/2, at rest, so no
     // damper either), (K/dx)(1 - 0.1/0.25)^2 at 0.1 dx.
@@ -413,6 +474,14 @@ TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
     } catch (const FatalError& e) {
         EXPECT_NE(std::string(e.what()).find("springDistance"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("must not exceed distance 0.025, found 0.04"), std::string::npos) << e.what();
+    }
+    try {
+        DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>(
+            dictionary("type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; closingSpeed average; }"), contextFor(h), "c");
+        FAIL() << "accepted an unknown closingSpeed";
+    } catch (const FatalError& e) {
+        EXPECT_NE(std::string(e.what()).find("closingSpeed"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("or mean, found 'average'"), std::string::npos) << e.what();
     }
 }
 

@@ -93,6 +93,8 @@ HYDROSTATIC_MODELS = [
 # wall; layers: enough behind it for the kernel's support).
 FLOW_MODELS = [
     ("deficiencyCorrectionBoundaryIntegral", "type deficiencyCorrectionBoundaryIntegral;", "surface"),
+    ("deficiencyCorrectionBoundaryIntegral (closingSpeed mean)",
+     "type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; closingSpeed mean; }", "surface"),
     ("deficiencyCorrection", "type deficiencyCorrection;", "surface"),
     ("dummyParticles", "type dummyParticles; noSlip no;", "layers"),
     ("dynamicBoundary", "type dynamicBoundary;", "layers"),
