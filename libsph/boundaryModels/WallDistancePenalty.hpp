@@ -12,8 +12,8 @@
 // leaves those behind; the damper on each one's closing speed takes the first and not the
 // second and drags it: a sphere of radius 3 dx oscillating in a tank takes 2.2-2.6 times the
 // other models' in-line force, 1.4-1.7 times with the mean (doc/boundaryFindings.md, "Why the
-// damper drags"). The mean is not the default: the boundary suite's flows move a few per cent
-// either way with it, but in a breaking-wave case it threw a run-up jet out of the domain. Zero
+// damper drags"). It is not the default yet: the documented figures of the correction's cases
+// are the default's (the boundary suite's flows move a few per cent either way with it). Zero
 // beyond d0 (default dx/2, where the first fluid row starts), so fluid at rest on the wall feels
 // nothing. The sums run over the wall particles with r_ij . n_j >= 0, unless fluid i
 // lies behind its nearest wall particle's plane (it has crossed the wall: then over all):
