@@ -164,7 +164,10 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& vi
     select(radialDirection_, [&](auto radial) {
         select(wallPressureCalibration, [&](auto wallPressure) {
             select(!repulsion_, [&](auto distancePartner) {
-                applyCorrection<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value>(view, gravity);
+                select(penalty_.meanClosingSpeed, [&](auto meanClosingSpeed) {
+                    applyCorrection<decltype(radial)::value, decltype(wallPressure)::value, decltype(distancePartner)::value,
+                                    decltype(meanClosingSpeed)::value>(view, gravity);
+                });
             });
         });
     });
@@ -293,7 +296,7 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
 }
 
 template <int D, class Weighting>
-template <bool Radial, bool WallPressure, bool DistancePartner>
+template <bool Radial, bool WallPressure, bool DistancePartner, bool MeanClosingSpeed>
 void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity) {
     const std::size_t n = view.fluid.ownedCount();
     const Vec<D>* v = view.fluid[fields::velocity].data();
@@ -349,11 +352,11 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
             }
             if constexpr (DistancePartner) {
                 if (const double rDotN = r.dot(normal[j]); crossed || rDotN >= 0.0)
-                    penalty_.add(penalty, W * area[j], rDotN, -(v[i] - vWall[j]).dot(normal[j]), normal[j]);
+                    penalty_.add<MeanClosingSpeed>(penalty, W * area[j], rDotN, -(v[i] - vWall[j]).dot(normal[j]), normal[j]);
             }
         }
         if constexpr (DistancePartner)
-            a[i] += penalty.weight > 0.0 ? Vec<D>(sum + penalty_.acceleration(penalty)) : sum;
+            a[i] += penalty.weight > 0.0 ? Vec<D>(sum + penalty_.acceleration<MeanClosingSpeed>(penalty)) : sum;
         else
             a[i] += sum;
         correction[i] += sum;

@@ -92,7 +92,7 @@ private:
     template <bool WallPressure, class Kernel>
     void setWallParticles(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Vec<D>& gravity, double lambda,
                           const Kernel& kernel);
-    template <bool Radial, bool WallPressure, bool DistancePartner>
+    template <bool Radial, bool WallPressure, bool DistancePartner, bool MeanClosingSpeed>
     void applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity);
     // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
     static constexpr bool separateAreaIntegral(bool radial) { return Weighting::normalised || radial; }

@@ -46,7 +46,8 @@ struct WallDistancePenalty {
 
     bool meanClosingSpeed = false;  // the damper on the mean closing speed, not each wall particle's
 
-    // One fluid particle's sums over its wall particles j (weight A_j W_ij).
+    // One fluid particle's sums over its wall particles j (weight A_j W_ij): `each` for the
+    // default, the rest for the mean closing speed.
     template <int D>
     struct Sums {
         Vec<D> each = Vec<D>::Zero(), meanDamper = Vec<D>::Zero(), spring = Vec<D>::Zero();
@@ -61,25 +62,32 @@ struct WallDistancePenalty {
         return gap * gap * (zeta * c0 / distance * std::max(0.0, closingSpeed)) + spring;
     }
 
-    // Wall particle j's terms, for either damper, so that the pair loop does not branch on the case's choice.
-    template <int D>
+    // Wall particle j's terms; Mean is meanClosingSpeed, a template argument so that the pair
+    // loop neither branches on it nor sums for the damper the case did not select.
+    template <bool Mean, int D>
     void add(Sums<D>& sums, double weight, double rDotN, double closingSpeed, const Vec<D>& normal) const {
-        sums.each += (weight * term(rDotN, closingSpeed)) * normal;
-        const double gap = std::max(0.0, 1.0 - rDotN / distance), damperWeight = weight * gap * gap;
-        sums.meanDamper += damperWeight * normal;
-        sums.damperWeight += damperWeight;
-        sums.damperClosing += damperWeight * closingSpeed;
-        const double springGap = std::max(0.0, 1.0 - rDotN / springDistance);
-        if (closingSpeed >= 0.0) sums.spring += (weight * springGap * springGap) * normal;
         sums.weight += weight;
+        if constexpr (!Mean) {
+            sums.each += (weight * term(rDotN, closingSpeed)) * normal;
+        } else {
+            const double gap = std::max(0.0, 1.0 - rDotN / distance), damperWeight = weight * gap * gap;
+            sums.meanDamper += damperWeight * normal;
+            sums.damperWeight += damperWeight;
+            sums.damperClosing += damperWeight * closingSpeed;
+            const double springGap = std::max(0.0, 1.0 - rDotN / springDistance);
+            if (closingSpeed >= 0.0) sums.spring += (weight * springGap * springGap) * normal;
+        }
     }
 
     // The partner's acceleration of the fluid particle (sums.weight > 0).
-    template <int D>
+    template <bool Mean, int D>
     Vec<D> acceleration(const Sums<D>& sums) const {
-        if (!meanClosingSpeed) return sums.each / sums.weight;
-        const double closingSpeed = sums.damperWeight > 0.0 ? std::max(0.0, sums.damperClosing / sums.damperWeight) : 0.0;
-        return (zeta * c0 / distance * closingSpeed * sums.meanDamper + K / dx * sums.spring) / sums.weight;
+        if constexpr (!Mean) {
+            return sums.each / sums.weight;
+        } else {
+            const double closingSpeed = sums.damperWeight > 0.0 ? std::max(0.0, sums.damperClosing / sums.damperWeight) : 0.0;
+            return (zeta * c0 / distance * closingSpeed * sums.meanDamper + K / dx * sums.spring) / sums.weight;
+        }
     }
 };
 
