@@ -48,9 +48,9 @@ BoundaryModelRegistry<D> makeBoundaryModelRegistry() {
                      return std::make_unique<RepulsiveWall<D>>(readRepulsionLaw(dict, context));
                  });
     const std::vector<CoefficientDoc> correction{
-        {"repulsion", "{ type wallDistance; K c0^2/200; damping 1; distance dx/2; springDistance distance/2; closingSpeed each; }",
-         "the partner that stops penetration: wallDistance (a damper on the closing speed within distance of the wall, on each wall "
-         "particle's or, closingSpeed mean, on their mean, which does not drag fluid sliding past a curved wall; and a spring K "
+        {"repulsion", "{ type wallDistance; K c0^2/200; damping 1; distance dx/2; springDistance distance/2; closingSpeed mean; }",
+         "the partner that stops penetration: wallDistance (a damper on the closing speed within distance of the wall, on the wall "
+         "particles' mean, which does not drag fluid sliding past a curved wall, or, closingSpeed each, on each one's; and a spring K "
          "within springDistance that pushes only while the fluid closes on the wall or rests: it holds a slow creep through a one-layer "
          "floor and returns nothing to an impact), monaghanKajtar or lennardJones"},
         {"calibration", "wallPressure",

@@ -63,9 +63,10 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
             penalty_.distance = repulsion->getPositiveOrDefault("distance", penalty_.distance);
             penalty_.zeta = repulsion->getNonNegativeOrDefault("damping", penalty_.zeta);
             penalty_.springDistance = repulsion->getPositiveOrDefault("springDistance", 0.5 * penalty_.distance);
-            const std::string closingSpeed = repulsion->getOrDefault<std::string>("closingSpeed", "each");
+            const std::string closingSpeed = repulsion->getOrDefault<std::string>("closingSpeed", "mean");
             if (closingSpeed != "each" && closingSpeed != "mean")
-                repulsion->fail("closingSpeed", "expected each (each wall particle's, the default) or mean, found '" + closingSpeed + "'");
+                repulsion->fail("closingSpeed",
+                                "expected mean (the wall particles' mean, the default) or each (each wall particle's), found '" + closingSpeed + "'");
             penalty_.meanClosingSpeed = closingSpeed == "mean";
             if (penalty_.springDistance > penalty_.distance)
                 repulsion->fail("springDistance",
@@ -113,8 +114,8 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
     return text + ", repulsion " +
            (repulsion_ ? sph::describe(*repulsion_)
-                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}{}", penalty_.K, penalty_.zeta,
-                                     penalty_.distance, penalty_.springDistance, penalty_.meanClosingSpeed ? ", closingSpeed mean" : ""));
+                       : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}, closingSpeed {}", penalty_.K,
+                                     penalty_.zeta, penalty_.distance, penalty_.springDistance, penalty_.meanClosingSpeed ? "mean" : "each"));
 }
 
 template <int D, class Weighting>

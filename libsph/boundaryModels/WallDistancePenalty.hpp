@@ -3,19 +3,19 @@
 // so that a fluid particle sliding along a wall feels no bumps between wall particles (the
 // discrete Lennard-Jones and Monaghan-Kajtar laws with wall spacing dx drag a dam-break front
 // measurably: doc/boundaryFindings.md). For fluid particle i, over wall particles j of area A_j:
-//   a_i += sum_j A_j W_ij [g_ij^2 zeta (c0/d0) max(0, u_ij) + H(u_ij) s_ij^2 K/dx] n_j / sum_j A_j W_ij
+//   a_i += [zeta (c0/d0) max(0, u_i) sum_j A_j W_ij g_ij^2 n_j + sum_j A_j W_ij H(u_ij) s_ij^2 (K/dx) n_j] / sum_j A_j W_ij
+//   u_i = sum_j A_j W_ij g_ij^2 u_ij / sum_j A_j W_ij g_ij^2 (the mean closing speed, weighted by the damper's gaps)
 //   g_ij = max(0, 1 - (r_ij . n_j) / d0),   s_ij = max(0, 1 - (r_ij . n_j) / d_s),   d_s <= d0
-//   u_ij = -(v_i - v_j) . n_j (the closing speed),   H(u) = 1 for u >= 0, else 0
-// or, with `closingSpeed mean`, the damper on the mean closing speed u_i instead of each u_ij:
-//   zeta (c0/d0) max(0, u_i) sum_j A_j W_ij g_ij^2 n_j,   u_i = sum_j A_j W_ij g_ij^2 u_ij / sum_j A_j W_ij g_ij^2
+//   u_ij = -(v_i - v_j) . n_j (the closing speed on wall particle j),   H(u) = 1 for u >= 0, else 0
+// or, with `closingSpeed each`, the damper on each wall particle's closing speed:
+//   sum_j A_j W_ij g_ij^2 zeta (c0/d0) max(0, u_ij) n_j in place of the first sum
 // On a curved wall, fluid sliding past closes on the wall particles ahead of it as fast as it
 // leaves those behind; the damper on each one's closing speed takes the first and not the
 // second and drags it: a sphere of radius 3 dx oscillating in a tank takes 2.2-2.6 times the
-// other models' in-line force, 1.4-1.7 times with the mean (doc/boundaryFindings.md, "Why the
-// damper drags"). It is not the default yet: the documented figures of the correction's cases
-// are the default's (the boundary suite's flows move a few per cent either way with it). Zero
-// beyond d0 (default dx/2, where the first fluid row starts), so fluid at rest on the wall feels
-// nothing. The sums run over the wall particles with r_ij . n_j >= 0, unless fluid i
+// other models' in-line force with `each`, 1.4-1.7 times with the mean (doc/boundaryFindings.md,
+// "Why the damper drags"). The mean is weighted by the damper's own gaps, so that where two
+// faces meet it is the nearer one's. Zero beyond d0 (default dx/2, where the first fluid row
+// starts), so fluid at rest on the wall feels nothing. The sums run over the wall particles with r_ij . n_j >= 0, unless fluid i
 // lies behind its nearest wall particle's plane (it has crossed the wall: then over all):
 // beyond a convex edge (behind a box, above a bulge's crest) fluid lies behind the planes of
 // the face that ends there, and their gaps, growing with the depth behind them, made a damper
@@ -27,7 +27,7 @@
 // particle closes on the wall or rests (H): it gives back no energy an impact stored, so an
 // impact does not ring (doc/boundaryFindings.md, "The partner").
 // Example (constant/boundaryProperties, inside a deficiency-correction patch):
-//   repulsion { type wallDistance; K 11.8; damping 1; distance 0.0075; springDistance 0.00375; closingSpeed each; }
+//   repulsion { type wallDistance; K 11.8; damping 1; distance 0.0075; springDistance 0.00375; closingSpeed mean; }
 #pragma once
 
 #include "core/Vector.hpp"
@@ -44,7 +44,7 @@ struct WallDistancePenalty {
     double c0;
     double springDistance;  // d_s <= d0: where the spring starts
 
-    bool meanClosingSpeed = false;  // the damper on the mean closing speed, not each wall particle's
+    bool meanClosingSpeed = true;  // the damper on the mean closing speed (the default), not each wall particle's
 
     // One fluid particle's sums over its wall particles j (weight A_j W_ij): `each` for the
     // default, the rest for the mean closing speed.

@@ -190,9 +190,9 @@ TEST(DeficiencyCorrection, BoundaryIntegralWeightingAlsoCancelsOnAStraightWall) 
 TEST(DeficiencyCorrection, TheDefaultPartnerIsTheWallDistancePenaltyAndAnUnknownOneIsAnError) {
     const DeficiencyCorrection<2, DeficiencyWeightingJones2010> model(dictionary("type deficiencyCorrection;"), contextFor(0.065),
                                                                       "deficiencyCorrection");
-    // A damper (zeta 1) within dx/2 and a spring K = c0^2/200 within dx/4.
-    EXPECT_NE(model.describe().find(
-                  "calibration wallPressure, direction normal, repulsion wallDistance: K 0.5, damping 1, distance 0.025, springDistance 0.0125"),
+    // A damper (zeta 1) on the mean closing speed within dx/2 and a spring K = c0^2/200 within dx/4.
+    EXPECT_NE(model.describe().find("calibration wallPressure, direction normal, repulsion wallDistance: K 0.5, damping 1, distance 0.025, "
+                                    "springDistance 0.0125, closingSpeed mean"),
               std::string::npos)
         << model.describe();
     try {
@@ -390,8 +390,8 @@ TEST(DeficiencyCorrection, WallDistanceDamperOnTheMeanClosingSpeedDoesNotDragFlu
     // A cylinder of radius 3 dx in one layer (19 wall particles, radial normals), fluid 0.3 dx off
     // its surface on the x axis, the spring off. Sliding along the wall at 0.2 it closes on the
     // wall particles ahead of it and leaves those behind as fast: the damper on each one's closing
-    // speed (the default) drags it, zeta (c0/d0) sum_j A W g_j^2 max(0, u_j) n_j / sum_j A W; their
-    // mean (closingSpeed mean, weighted g_j^2) is nil, and so is its damper. Closing at 0.2 along
+    // speed (closingSpeed each) drags it, zeta (c0/d0) sum_j A W g_j^2 max(0, u_j) n_j / sum_j A W;
+    // their mean (the default, weighted g_j^2) is nil, and so is its damper. Closing at 0.2 along
     // -x: zeta (c0/d0) max(0, u) sum_j A W g_j^2 n_j / sum_j A W, u the mean of 0.2 n_j . x, c0 = 10.
     // A wall moving with the fluid: nothing.
     const double h = 1.3 * dx, radius = 3 * dx, area = 2 * M_PI * radius / 19;
@@ -402,18 +402,17 @@ TEST(DeficiencyCorrection, WallDistanceDamperOnTheMeanClosingSpeedDoesNotDragFlu
         walls.push_back(radius * normals.back());
     }
     const Vec<2> x(radius + 0.3 * dx, 0.0);
-    const auto damperOn = [&](const Vec<2>& velocity, const Vec<2>& wallVelocity, const char* closingSpeed = "mean") {
+    const auto damperOn = [&](const Vec<2>& velocity, const Vec<2>& wallVelocity, const std::string& closingSpeed = "") {
         auto wallParticles = wallSet<2>(walls, Vec<2>(0, 1), area);  // spacing: the area in 2D
         wallParticles[fields::normal] = normals;
         auto fluid = fluidSet<2>({x});
         fluid[fields::velocity][0] = velocity;
-        auto s =
-            system<2>(std::move(fluid), std::move(wallParticles),
-                      std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
-                          dictionary(fmt::format(
-                              "type deficiencyCorrectionBoundaryIntegral; repulsion {{ type wallDistance; K 0; closingSpeed {}; }}", closingSpeed)),
-                          contextFor(h), "c"),
-                      h, Vec<2>(-1, -1), Vec<2>(1, 1));
+        auto s = system<2>(std::move(fluid), std::move(wallParticles),
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                               dictionary(fmt::format("type deficiencyCorrectionBoundaryIntegral; repulsion {{ type wallDistance; K 0; {} }}",
+                                                      closingSpeed.empty() ? "" : "closingSpeed " + closingSpeed + ";")),
+                               contextFor(h), "c"),
+                           h, Vec<2>(-1, -1), Vec<2>(1, 1));
         for (auto& v : s->walls[fields::velocity]) v = wallVelocity;
         s->evaluateRates(0.0);
         return Vec<2>(s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0]);
@@ -444,6 +443,7 @@ TEST(DeficiencyCorrection, WallDistanceDamperOnTheMeanClosingSpeedDoesNotDragFlu
     ASSERT_GT(expected.x(), 1.0);
     EXPECT_NEAR(closing.x(), expected.x(), 1e-12 * expected.norm());
     EXPECT_NEAR(closing.y(), 0.0, 1e-12 * expected.norm());
+    EXPECT_EQ(damperOn(closingVelocity, Vec<2>::Zero(), "mean"), closing);  // the default is the mean
     EXPECT_LT(damperOn(Vec<2>(-0.2, 0.1), Vec<2>(-0.2, 0.1)).norm(), 1e-9 * expected.norm());
 }
 
@@ -481,7 +481,7 @@ TEST(DeficiencyCorrection, WallDistanceSpringActsOnlyWithinItsOwnDistance) {
         FAIL() << "accepted an unknown closingSpeed";
     } catch (const FatalError& e) {
         EXPECT_NE(std::string(e.what()).find("closingSpeed"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("or mean, found 'average'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("or each (each wall particle's), found 'average'"), std::string::npos) << e.what();
     }
 }
 

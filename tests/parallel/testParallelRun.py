@@ -471,13 +471,15 @@ class ParallelRun(unittest.TestCase):
             self.assertGreater(int(re.search(r"resizes \(particles crossed or removed\)\s+(\d+)", log).group(1)), 0)
         if SANITIZED:
             return
-        # CVODE on one rank is the serial run; on three, the dot products and norms of its
-        # Newton-GMRES iterations in another order (measured: 1.1e-16 m, 9.6e-15 m/s, 3.1e-12 kg/m^3
-        # after 586 steps). On two, particles cross between the ranks and CVODE restarts: its BDF
-        # history is rebuilt, and the run agrees to the tolerances (2.3e-7 m, 1.8e-4 m/s, 0.039 kg/m^3).
+        # CVODE on one and three ranks: the dot products and norms of its Newton-GMRES iterations
+        # on the MPI ManyVector, in another order than the serial vector's on three (measured:
+        # 1.1e-16 m, 9.6e-15 m/s, 3.1e-12 kg/m^3 after 586 steps), and on one equal bit for bit
+        # on some machines, on an AVX-512 one off in the last bits (1.4e-17 m, 3.9e-15 m/s,
+        # 5.7e-13 kg/m^3; the explicit integrators there still bit for bit). On two, particles
+        # cross between the ranks and CVODE restarts: its BDF history is rebuilt, and the run
+        # agrees to the tolerances (2.3e-7 m, 1.8e-4 m/s, 0.039 kg/m^3).
         cvode = dam_break("type cvode;", "cvode")
-        self.assert_equal_to_serial(cvode, (1,), ("0.005", "0.01"))
-        self.assert_close_to_serial(cvode, (3,), "0.01", {"points": 1e-15, "velocity": 1e-13, "density": 1e-10})
+        self.assert_close_to_serial(cvode, (1, 3), "0.01", {"points": 1e-15, "velocity": 1e-13, "density": 1e-10})
         self.assert_close_to_serial(cvode, (2,), "0.01", {"points": 2e-6, "velocity": 2e-3, "density": 0.5})
         # ARKStep's Newton iterations stop at their tolerance, and the last iterate follows the
         # dot products' order: 5.2e-13 m, 2.6e-10 m/s, 8.4e-8 kg/m^3 after 146 steps, on 1 to 3

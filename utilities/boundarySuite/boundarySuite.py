@@ -93,8 +93,8 @@ HYDROSTATIC_MODELS = [
 # wall; layers: enough behind it for the kernel's support).
 FLOW_MODELS = [
     ("deficiencyCorrectionBoundaryIntegral", "type deficiencyCorrectionBoundaryIntegral;", "surface"),
-    ("deficiencyCorrectionBoundaryIntegral (closingSpeed mean)",
-     "type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; closingSpeed mean; }", "surface"),
+    ("deficiencyCorrectionBoundaryIntegral (closingSpeed each)",
+     "type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; closingSpeed each; }", "surface"),
     ("deficiencyCorrection", "type deficiencyCorrection;", "surface"),
     ("dummyParticles", "type dummyParticles; noSlip no;", "layers"),
     ("dynamicBoundary", "type dynamicBoundary;", "layers"),

@@ -40,9 +40,9 @@ Reports per run: the outcome (the blow-up's message), the most fluid particles b
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
 still-water cases the pressure's error against hydrostatic at the end (L2 and max over rho g H,
 below the top 0.1 m) and the fluid's RMS speed then, the floating box's rest, the oscillating
-sphere's in-line force, and the particles removed as they left the domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...]
+sphere's in-line force, and the particles removed as they left the domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...] [--models NAME ...]
 (from the repository root; binaries from $SPHKIT_BIN or build/bin; about 50 minutes on 2 cores).
---markdown writes the table, keeping the rows of the cases not run; --check compares the runs'
+--models runs the named models only; --markdown writes the table, keeping the rows not run; --check compares the runs'
 outcomes, counts and figures with a table's (not the wall times) and exits 1 where one differs
 (CTest's DocumentedFigures.outsideCases, label long).
 """
@@ -294,8 +294,9 @@ def main():
     parser.add_argument("--check", metavar="FILE", help="compare each run's outcome, count and figure with FILE's row; exit 1 if any differs")
     parser.add_argument("--work", default=os.path.join(ROOT, "build", "outsideCases"))
     parser.add_argument("--cases", nargs="+", choices=list(CASES), default=list(CASES), help="run these only")
+    parser.add_argument("--models", nargs="+", choices=list(MODELS), default=list(MODELS), help="on these models only")
     options = parser.parse_args()
-    jobs = [(options.work, name, model) for name in options.cases for model in MODELS]
+    jobs = [(options.work, name, model) for name in options.cases for model in options.models]
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
         runs = {(name, model): ["%s" % outcome, "%d" % behind, "%.1f" % seconds, figure]
                 for name, model, outcome, behind, seconds, figure in pool.map(lambda job: run(*job), jobs)}
