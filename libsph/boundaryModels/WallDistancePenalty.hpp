@@ -46,8 +46,8 @@ struct WallDistancePenalty {
 
     bool meanClosingSpeed = true;  // the damper on the mean closing speed (the default), not each wall particle's
 
-    // One fluid particle's sums over its wall particles j (weight A_j W_ij): `each` for the
-    // default, the rest for the mean closing speed.
+    // One fluid particle's sums over its wall particles j (weight A_j W_ij): `each` for
+    // `closingSpeed each`, the rest for the mean closing speed (the default).
     template <int D>
     struct Sums {
         Vec<D> each = Vec<D>::Zero(), meanDamper = Vec<D>::Zero(), spring = Vec<D>::Zero();
