@@ -474,7 +474,7 @@ class ParallelRun(unittest.TestCase):
         # CVODE on one and three ranks: the dot products and norms of its Newton-GMRES iterations
         # on the MPI ManyVector, in another order than the serial vector's on three (measured:
         # 1.1e-16 m, 9.6e-15 m/s, 3.1e-12 kg/m^3 after 586 steps), and on one equal bit for bit
-        # on some machines, on an AVX-512 one off in the last bits (1.4e-17 m, 3.9e-15 m/s,
+        # on the project's earlier machines, on an Intel Xeon off in the last bits (1.4e-17 m, 3.9e-15 m/s,
         # 5.7e-13 kg/m^3; the explicit integrators there still bit for bit). On two, particles
         # cross between the ranks and CVODE restarts: its BDF history is rebuilt, and the run
         # agrees to the tolerances (2.3e-7 m, 1.8e-4 m/s, 0.039 kg/m^3).
