@@ -310,6 +310,7 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
     const Vec<D>* normal = view.walls[fields::normal].data();
     const Vec<D>* aWall = view.walls[fields::acceleration].data();
     const double* area = view.walls[fields::area].data();
+    const double* spacing = view.walls[fields::spacing].data();
     const double* push = push_.data();
     const double* virtualDensity = virtualDensity_.data();
     // The blended correction, the virtual particles' compression, the distance partner.
@@ -332,10 +333,12 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
         // behind an edge particle's plane (the faces' mean normal) in front of a face beside it
         // (WallSide.hpp): a piston flush with a tank's side wall turns the edge particle's normal
         // into the side wall, and fluid in the corner between them, taking that for a crossing,
-        // was pushed into the side wall and floor while it crept through the piston's face.
+        // was pushed into the side wall and floor while it crept through the piston's face. Nor
+        // has fluid over a wall's free end (a splash over an open tank's top): taken for a
+        // crossing, the wall's planes pushed it back in, a wall standing a support above the top.
         [[maybe_unused]] bool crossed = false;
         if constexpr (DistancePartner) {
-            const auto side = wallSide<D>(normal, nullptr, [&](auto&& visit) {
+            const auto side = wallSide<D>(normal, spacing, nullptr, [&](auto&& visit) {
                 for (std::uint32_t k = range.begin; k < range.end; ++k) visit(pairs[k].wall, pairs[k].r, pairs[k].distance * pairs[k].distance);
             });
             crossed = side && side->behind;

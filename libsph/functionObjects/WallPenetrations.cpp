@@ -9,43 +9,84 @@
 
 namespace sph {
 
-template <int D>
-WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectContext<D>& context)
-    : reductions_(context.reductions), out_(context.series("penetrations.dat", "# time behindWall mostSoFar")) {}
+namespace {
 
-template <int D>
-std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
+// visit(i, side) for every fluid particle i this process owns that has a first-layer wall
+// particle within the kernel support (any patch), in parallel.
+template <int D, class Visit>
+void forEachOwnedFluidBesideAWall(const FluidSystemView<D>& system, Visit&& visit) {
     const std::size_t n = system.fluid.ownedCount();
     const Vec<D>* x = system.fluid.position.data();
     const Vec<D>* normal = system.walls[fields::normal].data();
+    const double* spacing = system.walls[fields::spacing].data();
     const int* layer = system.walls.optionalData(fields::layer);
     // The wall-particle patches share one cell list; each wall-force patch has its own.
     std::vector<const CellLinkedList<D>*> lists{&system.wallCells};
     for (const Patch<D>& patch : system.patches)
         if (patch.cells) lists.push_back(&*patch.cells);
     const double radius = system.supportRadius;
-    const auto forEachFirstLayerParticle = [&](const Vec<D>& xi, auto&& visit) {
+    const auto forEachFirstLayerParticle = [&](const Vec<D>& xi, auto&& visitWall) {
         for (const CellLinkedList<D>* list : lists)
             if (list->anyPointNear(xi))
                 list->forEachNeighbour(xi, radius, [&](std::uint32_t j, const Vec<D>& r, double r2) {
-                    if (!layer || layer[j] == 0) visit(j, r, r2);
+                    if (!layer || layer[j] == 0) visitWall(j, r, r2);
                 });
     };
-    std::size_t behind = 0;
-#pragma omp parallel for schedule(static) reduction(+ : behind)
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
         if (!system.ownsFluid(i)) continue;
-        const auto side = wallSide<D>(normal, nullptr, [&](auto&& visit) { forEachFirstLayerParticle(x[i], visit); });
-        if (side && side->behind) ++behind;
+        const auto side = wallSide<D>(normal, spacing, nullptr, [&](auto&& visitWall) { forEachFirstLayerParticle(x[i], visitWall); });
+        if (side) visit(i, *side);
     }
+}
+
+}  // namespace
+
+template <int D>
+WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectContext<D>& context)
+    : reductions_(context.reductions), out_(context.series("penetrations.dat", "# time behindWall mostSoFar")) {}
+
+template <int D>
+std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
+    std::size_t behind = 0;
+    forEachOwnedFluidBesideAWall(system, [&](std::size_t, const WallSide& side) {
+        if (side.behind) {
+#pragma omp atomic
+            ++behind;
+        }
+    });
     return behind;
 }
 
 template <int D>
 void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
-    const auto behind = static_cast<std::size_t>(reductions_.sum(static_cast<double>(count(system))));
-    most_ = std::max(most_, behind);
-    out_.append(fmt::format("{:.9g} {} {}", t, behind, most_));
+    const std::int64_t* id = system.fluid.globalId.data();
+    std::size_t behind = 0;
+    // Ids that came around a free end (id + 1) and that are in front of a wall again (-(id + 1)):
+    // rare, so collected under a lock and shared with every process.
+    std::vector<double> changes;
+    forEachOwnedFluidBesideAWall(system, [&](std::size_t i, const WallSide& side) {
+        const bool remembered = aroundFreeEnd_.contains(id[i]);
+        const bool inFront = !side.behind && !side.beyondFreeEnd;
+        if (side.behind && !remembered) {
+#pragma omp atomic
+            ++behind;
+        }
+        if ((side.beyondFreeEnd && !remembered) || (inFront && remembered)) {
+#pragma omp critical(wallPenetrationsChanges)
+            changes.push_back(static_cast<double>(side.beyondFreeEnd ? id[i] + 1 : -(id[i] + 1)));
+        }
+    });
+    for (const double change : reductions_.gather(changes)) {
+        const auto changed = static_cast<std::int64_t>(change);
+        if (changed > 0)
+            aroundFreeEnd_.insert(changed - 1);
+        else
+            aroundFreeEnd_.erase(-changed - 1);
+    }
+    const auto total = static_cast<std::size_t>(reductions_.sum(static_cast<double>(behind)));
+    most_ = std::max(most_, total);
+    out_.append(fmt::format("{:.9g} {} {}", t, total, most_));
 }
 
 template class WallPenetrations<1>;

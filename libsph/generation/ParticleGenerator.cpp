@@ -443,7 +443,7 @@ void requireWallsFacingTheirFluid(const Dictionary& boundaries, const GeneratedW
     const std::size_t patches = walls.patchNames.size();
     std::vector<double> counts(2 * patches, 0.0);  // per patch: fluid next to it, and of those behind it
     for (const Vec<D>& x : fluid) {
-        const auto side = wallSide<D>(walls.particles.normals.data(), walls.particles.layers.data(),
+        const auto side = wallSide<D>(walls.particles.normals.data(), walls.particles.spacings.data(), walls.particles.layers.data(),
                                       [&](auto&& visit) { wallCells.forEachNeighbour(x, reach, visit); });
         if (!side) continue;
         const auto p = static_cast<std::size_t>(walls.patchOf[side->nearestWall]);

@@ -14,6 +14,7 @@ namespace sph {
 struct WallSide {
     std::uint32_t nearestWall;
     bool behind;
+    bool beyondFreeEnd = false;  // behind the nearest particle's plane, but past the wall's end
 };
 
 // forEachWallParticle(visit) calls visit(j, x - x_j, |x - x_j|^2) for every wall particle j near
@@ -25,9 +26,12 @@ struct WallSide {
 // plane too: the solid is behind all of them, so a point in front of any is outside, in the
 // corner between the faces and the plane of the edge's own particle, whose normal is the
 // faces' mean. (Across layers the rule would not hold: a thin solid's particles from the far
-// face have the opposite normal.)
+// face have the opposite normal.) Nor is a point behind the wall that lies more than the nearest
+// particle's spacing along its plane from it: along a wall the nearest particle is at most
+// half a spacing (2D) or s/sqrt(2) (3D, a square lattice) away along the plane, so such a point
+// is beyond the wall's free end (a tank's open top, a baffle's tip), where no wall holds it.
 template <int D, class ForEachWallParticle>
-std::optional<WallSide> wallSide(const Vec<D>* normal, const int* layer, ForEachWallParticle&& forEachWallParticle) {
+std::optional<WallSide> wallSide(const Vec<D>* normal, const double* spacing, const int* layer, ForEachWallParticle&& forEachWallParticle) {
     double nearest = std::numeric_limits<double>::infinity();
     double side = 1.0;
     std::optional<std::uint32_t> nearestWall;
@@ -47,7 +51,12 @@ std::optional<WallSide> wallSide(const Vec<D>* normal, const int* layer, ForEach
         if ((!layer || layer[k] == layer[*nearestWall]) && r.dot(normal[k]) >= 0.0 && (fromNearest - r).dot(normal[k] - normal[*nearestWall]) > 0.0)
             inFrontOfAConvexNeighbour = true;
     });
-    return WallSide{*nearestWall, !inFrontOfAConvexNeighbour};
+    if (inFrontOfAConvexNeighbour) return WallSide{*nearestWall, false};
+    // A free end's particles share one normal (no convex neighbour): only a point behind every
+    // plane near it can lie past one, not one beside a convex edge.
+    const Vec<D> alongThePlane = fromNearest - side * normal[*nearestWall];
+    const bool beyondFreeEnd = alongThePlane.squaredNorm() > spacing[*nearestWall] * spacing[*nearestWall];
+    return WallSide{*nearestWall, !beyondFreeEnd, beyondFreeEnd};
 }
 
 }  // namespace sph

@@ -10,6 +10,7 @@
 #include "functionObjects/WallPenetrations.hpp"
 #include "physics/FluidSystem.hpp"
 
+#include "support/CaseFixture.hpp"
 #include "support/RestoreThreadCount.hpp"
 
 #include <fmt/format.h>
@@ -647,4 +648,102 @@ TEST(WallPenetrations, FluidAgainstAConvexEdgeIsNotBehindIt) {
     EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, -0.4 * dx)), 1u);
     EXPECT_EQ(behindAt(tank + Vec<2>(1.2 * dx, -0.3 * dx)), 1u);
     EXPECT_EQ(behindAt(tank + Vec<2>(1.2 * dx, 0.3 * dx)), 0u);
+}
+
+TEST(WallPenetrations, FluidBeyondAWallsFreeEndIsNotBehindIt) {
+    // A tank's side wall x = 0 (normal +x) whose top particle is at y = 0.975, half a spacing
+    // below its open end at y = 1. Fluid splashed over the top, outside the wall's plane, is
+    // held by no wall: 1.2 spacings above the top particle it is beyond the free end; 0.8
+    // spacings above it, within a spacing along the plane, it is taken as behind (the nearest
+    // particle along a wall is at most half a spacing away). Below the top, behind the plane,
+    // it has leaked.
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
+    const auto behindAt = [&](const Vec<2>& x) {
+        auto s = system<2>(fluidSet<2>({x}), wallSet<2>(walls, Vec<2>(1, 0), dx),
+                           std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
+                           Vec<2>(-1, -1), Vec<2>(1, 2));
+        return WallPenetrations<2>::count(s->view());
+    };
+    EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx)), 0u);  // the nearest-plane test alone: 1
+    EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.975 + 0.8 * dx)), 1u);
+    EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.5)), 1u);
+}
+
+TEST(WallPenetrations, FluidThatCameDownAWallsBackIsNotCountedUntilItIsInFrontAgain) {
+    // The side wall x = 0 of the test above, two fluid particles. Particle 0 goes over the top
+    // (1.2 spacings above its last particle, outside its plane), comes down the wall's back
+    // (behind it, beside its particles: a snapshot counts it), is pushed back in front, and
+    // then leaks through the wall: only the leak counts. Particle 1 leaks at the third step.
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
+    auto s = system<2>(fluidSet<2>({Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx), Vec<2>(0.5 * dx, 0.3)}), wallSet<2>(walls, Vec<2>(1, 0), dx),
+                       std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
+                       Vec<2>(-1, -1), Vec<2>(1, 2));
+    const auto dir = sph::test::freshDirectory();
+    WallPenetrations<2> leaks(dictionary("type wallPenetrations;"), {dir, dir, rho0, s->view()});
+    auto& x = s->fluid.position;
+    const std::vector<std::pair<Vec<2>, Vec<2>>> steps{{x[0], x[1]},                                       // over the top
+                                                       {Vec<2>(-0.3 * dx, 0.9), x[1]},                     // down the wall's back
+                                                       {Vec<2>(-0.3 * dx, 0.8), Vec<2>(-0.2 * dx, 0.3)},   // still there; particle 1 leaks
+                                                       {Vec<2>(0.4 * dx, 0.8), Vec<2>(-0.2 * dx, 0.3)},    // particle 0 in front again
+                                                       {Vec<2>(-0.2 * dx, 0.8), Vec<2>(-0.2 * dx, 0.3)}};  // and through the wall
+    std::vector<std::size_t> snapshots;
+    for (std::size_t step = 0; step < steps.size(); ++step) {
+        x[0] = steps[step].first, x[1] = steps[step].second;
+        s->evaluateRates(0.0);  // the cell lists at the new positions
+        snapshots.push_back(WallPenetrations<2>::count(s->view()));
+        leaks.execute(s->view(), static_cast<double>(step));
+    }
+    EXPECT_EQ(snapshots, (std::vector<std::size_t>{0, 1, 2, 1, 2}));
+    std::ifstream written(dir / "penetrations.dat");
+    std::string line, counts;
+    std::getline(written, line);
+    while (std::getline(written, line)) counts += line.substr(line.find(' ') + 1) + "; ";
+    EXPECT_EQ(counts, "0 0; 0 0; 1 1; 1 1; 2 2; ");
+}
+
+TEST(WallPenetrations, FluidBeyondAPlatesRimIsNotBehindItIn3D) {
+    // A 3D plate of 20 x 20 wall particles at z = 0 (normal +z), its rim half a spacing beyond
+    // its outermost particles. Under the plate's middle fluid has leaked; under it beside the
+    // rim's last particle, within s/sqrt(2) along the plane, too; beyond the rim it has not.
+    const double h = 1.3 * dx;
+    std::vector<Vec<3>> walls;
+    for (int j = 0; j < 20; ++j)
+        for (int i = 0; i < 20; ++i) walls.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, 0.0));
+    const auto behindAt = [&](const Vec<3>& x) {
+        auto s = system<3>(fluidSet<3>({x}), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
+                           std::make_unique<RepulsiveWall<3>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
+                           Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
+        return WallPenetrations<3>::count(s->view());
+    };
+    EXPECT_EQ(behindAt(Vec<3>(0.52, 0.47, -0.2 * dx)), 1u);
+    EXPECT_EQ(behindAt(Vec<3>(1.0 + 0.1 * dx, 0.52, -0.3 * dx)), 1u);  // 0.6 spacings beyond the last particle
+    EXPECT_EQ(behindAt(Vec<3>(1.0 + 0.8 * dx, 0.52, -0.3 * dx)), 0u);  // 1.3 spacings beyond it
+    EXPECT_EQ(behindAt(Vec<3>(1.0 + 0.8 * dx, 1.0 + 0.8 * dx, -0.3 * dx)), 0u);
+}
+
+TEST(DeficiencyCorrection, WallDistancePenaltyLeavesAloneFluidBeyondAWallsFreeEnd) {
+    // A tank's side wall x = 0 (normal +x) ending half a spacing above its top particle at
+    // y = 0.975. Fluid at rest 0.3 dx outside its plane and 1.2 spacings above that particle has
+    // gone over the top: no wall holds it, and the partner gives nothing (taken for a crossing,
+    // the spring of the wall's planes pushed it back in, +x). The same fluid beside the wall,
+    // behind it, is pushed out.
+    const double h = 1.3 * dx;
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
+    const auto penaltyAt = [&](const Vec<2>& x) {
+        auto s = system<2>(fluidSet<2>({x}), wallSet<2>(walls, Vec<2>(1, 0), dx),
+                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                               dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
+                           h, Vec<2>(-1, -1), Vec<2>(1, 2));
+        s->evaluateRates(0.0);
+        return Vec<2>(s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0]);
+    };
+    const Vec<2> beyond = penaltyAt(Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx));
+    EXPECT_EQ(beyond, Vec<2>::Zero()) << beyond.transpose();  // taken for a crossing: (48.4, 0)
+    const Vec<2> crossed = penaltyAt(Vec<2>(-0.3 * dx, 0.5));
+    EXPECT_GT(crossed.x(), 0.5 / dx) << crossed.transpose();  // more than the spring at the wall's surface, K/dx
 }

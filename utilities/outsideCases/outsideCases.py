@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Twenty cases the project does not ship, written as a user would (the shipped cases' schemes:
+"""Twenty-three cases the project does not ship, written as a user would (the shipped cases' schemes:
 Wendland C2, hdx 1.3, continuity, artificial viscosity 0.02, Fourtakas diffusion, symplectic,
 Courant 0.2, c0 = 10 sqrt(g H)), each run with the boundary-integral deficiency correction,
 free-slip dummy particles and dynamic boundary particles; every patch's layout is the one its
@@ -34,14 +34,19 @@ model asks for (no `layers`), so that a model is one word:
   3D), with `outOfDomain remove` (its splash leaves the open tank);
 - oscillatingSphere3D: a sphere of radius 0.06 m (3 dx) from an OBJ of 1,280 triangles, submerged at
   mid-depth in still water 0.3 m deep, oscillating 0.05 m along the tank at 1 Hz (a curved wall moving
-  through the fluid in 3D): its in-line force against potential flow's added mass.
+  through the fluid in 3D): its in-line force against potential flow's added mass;
+- slot2D: a reservoir 0.3 m deep on a shelf 0.04 m thick draining through a slot 3 dx wide into the basin below
+  (fluid between walls a support apart, the slot's convex edges, the jet striking the basin's floor);
+- slotStillWater2D: still water 0.3 m deep in a slot 4 dx wide (every particle within a support of both walls);
+- mixedCorners2D: a dam break in a tank of three patches, the floor on the row's model and the side walls always on
+  the correction (two models meeting at the corners, as a user mixes them by patch), with `outOfDomain remove`.
 
 Reports per run: the outcome (the blow-up's message), the most fluid particles behind a wall
 at any step (wallPenetrations), the wall time (one thread, two runs at a time), for the
 still-water cases the pressure's error against hydrostatic at the end (L2 and max over rho g H,
 below the top 0.1 m) and the fluid's RMS speed then, the floating box's rest, the oscillating
 sphere's in-line force, and the particles removed as they left the domain. Usage: utilities/outsideCases/outsideCases.py [--markdown FILE] [--check FILE] [--work DIR] [--cases NAME ...] [--models NAME ...]
-(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 50 minutes on 2 cores).
+(from the repository root; binaries from $SPHKIT_BIN or build/bin; about 40 minutes on 2 cores).
 --models runs the named models only; --markdown writes the table, keeping the rows not run; --check compares the runs'
 outcomes, counts and figures with a table's (not the wall times) and exits 1 where one differs
 (CTest's DocumentedFigures.outsideCases, label long).
@@ -128,17 +133,29 @@ CASES = {
                             "sphere { type surface; file \"constant/geometry/sphere.obj\"; fluidInside no; }",
                             {"tank": "", "sphere": "motion { type oscillation; amplitude (%g 0 0); frequency %g; rampTime 0.5; }" % (
                                 SPHERE_AMPLITUDE, SPHERE_FREQUENCY)}, 3.0, 0.3),
+    "slot2D": (2, 0.01, "{ min (-0.1 -0.1); max (1.1 1.1); }", "reservoir { type box; min (0 0.34); max (1 0.64); }",
+               "tank { type boxWalls; min (0 0); max (1 1); open (yMax); }\n"
+               "shelfLeft { type polygon; points ((0 0.3) (0.485 0.3) (0.485 0.34) (0 0.34)); side right; }\n"
+               "shelfRight { type polygon; points ((0.515 0.3) (1 0.3) (1 0.34) (0.515 0.34)); side right; }",
+               {"tank": "", "shelfLeft": "", "shelfRight": ""}, 1.5, 0.64),
+    "slotStillWater2D": (2, 0.01, "{ min (-0.1 -0.1); max (0.14 0.5); }", "water { type box; min (0 0); max (0.04 0.3); }",
+                         "tank { type boxWalls; min (0 0); max (0.04 0.4); open (yMax); }", {"tank": ""}, 2.0, 0.3),
+    "mixedCorners2D": (2, 0.01, "{ min (-0.1 -0.1); max (2.1 1.1); }", "column { type box; min (0 0); max (0.5 0.5); }",
+                       "floor { type polyline; points ((0 0) (2 0)); }\nleft { type polyline; points ((0 1) (0 0)); }\n"
+                       "right { type polyline; points ((2 0) (2 1)); }", {"floor": "", "left": "", "right": ""}, 2.0, 0.5),
 }
-STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D")
+STILL_WATER = ("vTank2D", "acuteV2D", "fineStillWater2D", "slotStillWater2D")
 # controlDict entries beyond the common ones: the cylinder's run-up sheet climbs the far wall past 1.6 m
-# in a few particles, and the sphere's splash leaves its open tank, which DualSPHysics would exclude;
-# the count removed is reported.
-CONTROL = {"cylinder2D": "outOfDomain remove;\n", "sphere3D": "outOfDomain remove;\n"}
+# in a few particles (the mixed corners' past 1.1 m), and the sphere's splash leaves its open tank, which
+# DualSPHysics would exclude; the count removed is reported.
+CONTROL = {"cylinder2D": "outOfDomain remove;\n", "sphere3D": "outOfDomain remove;\n", "mixedCorners2D": "outOfDomain remove;\n"}
 # Function objects beyond wallPenetrations, and patches on a model of their own whatever the row's: a free
 # body's loads come from a wall-force model, so the floating box is always on the correction.
 FUNCTIONS = {"floatingBox2D": "    box { type bodyMotion; patch box; executeInterval 0.01; }\n",
              "oscillatingSphere3D": "    sphere { type forces; patches (sphere); executeInterval 0.005; }\n"}
-MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"}}
+# The mixed corners: the side walls always on the correction, the floor on the row's model.
+MODEL_OF = {"floatingBox2D": {"box": "deficiencyCorrectionBoundaryIntegral"},
+            "mixedCorners2D": {"left": "deficiencyCorrectionBoundaryIntegral", "right": "deficiencyCorrectionBoundaryIntegral"}}
 # Files a case reads beyond its dictionaries, written by a function of none.
 FILES = {"sphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.5, 0.2, 0.14), 0.08, 4)},
          "oscillatingSphere3D": {"constant/geometry/sphere.obj": lambda: icosphere((0.3, 0.15, 0.15), SPHERE_RADIUS, 3)}}
@@ -212,12 +229,14 @@ def read(path):
 
 def hydrostatic_error(name, directory, end):
     """A still-water case's pressure against rho g (surface - y) at the end, below the top 0.1 m: L2 and
-    max over rho g H (the surface the mean height of the 20 highest particles); and the fluid's
+    max over rho g H (the surface the mean height of the 20 highest particles, or of one row's
+    in a narrower tank); and the fluid's
     RMS speed, what is left of the start's disturbance (the lattice meets the slanted walls in
     steps), whose acoustic breathing swings the pressure by a few per cent of rho g H."""
     x, fields = read(os.path.join(directory, f"{end:g}", "fluid.vtu"))
     y = x[:, 1]
-    surface = np.sort(y)[-20:].mean()
+    columns = int(round(np.ptp(x[:, 0]) / CASES[name][1])) + 1
+    surface = np.sort(y)[-min(20, columns):].mean()
     below = y < surface - 0.1
     error = fields["pressure"][below] - 1000 * 9.81 * (surface - y[below])
     scale = 1000 * 9.81 * CASES[name][7]
