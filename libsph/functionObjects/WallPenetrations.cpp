@@ -66,7 +66,7 @@ void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
     // rare, so collected under a lock and shared with every process.
     std::vector<double> changes;
     forEachOwnedFluidBesideAWall(system, [&](std::size_t i, const WallSide& side) {
-        const bool remembered = aroundFreeEnd_.contains(id[i]);
+        const bool remembered = !aroundFreeEnd_.empty() && aroundFreeEnd_.contains(id[i]);  // mostly empty: no lookup
         const bool inFront = !side.behind && !side.beyondFreeEnd;
         if (side.behind && !remembered) {
 #pragma omp atomic
