@@ -44,7 +44,9 @@ void forEachOwnedFluidBesideAWall(const FluidSystemView<D>& system, Visit&& visi
 
 template <int D>
 WallPenetrations<D>::WallPenetrations(const Dictionary&, const FunctionObjectContext<D>& context)
-    : reductions_(context.reductions), out_(context.series("penetrations.dat", "# time behindWall mostSoFar")) {}
+    : reductions_(context.reductions),
+      out_(context.series("penetrations.dat", "# time behindWall mostSoFar")),
+      firstFound_(context.series("behindWall.dat", "# time id position: each fluid particle the first time it is behind a wall")) {}
 
 template <int D>
 std::size_t WallPenetrations<D>::count(const FluidSystemView<D>& system) {
@@ -65,12 +67,21 @@ void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
     // Ids that came around a free end (id + 1) and that are in front of a wall again (-(id + 1)):
     // rare, so collected under a lock and shared with every process.
     std::vector<double> changes;
+    std::vector<double> found;  // id, then the position, of each particle counted for the first time
+    const Vec<D>* x = system.fluid.position.data();
     forEachOwnedFluidBesideAWall(system, [&](std::size_t i, const WallSide& side) {
         const bool remembered = !aroundFreeEnd_.empty() && aroundFreeEnd_.contains(id[i]);  // mostly empty: no lookup
         const bool inFront = !side.behind && !side.beyondFreeEnd;
         if (side.behind && !remembered) {
 #pragma omp atomic
             ++behind;
+            if (!listed_.contains(id[i])) {
+#pragma omp critical(wallPenetrationsFound)
+                {
+                    found.push_back(static_cast<double>(id[i]));
+                    for (int d = 0; d < D; ++d) found.push_back(x[i][d]);
+                }
+            }
         }
         if ((side.beyondFreeEnd && !remembered) || (inFront && remembered)) {
 #pragma omp critical(wallPenetrationsChanges)
@@ -83,6 +94,17 @@ void WallPenetrations<D>::execute(const FluidSystemView<D>& system, double t) {
             aroundFreeEnd_.insert(changed - 1);
         else
             aroundFreeEnd_.erase(-changed - 1);
+    }
+    // By id, so that the file does not depend on the threads' or ranks' order.
+    const std::vector<double> everyFound = reductions_.gather(found);
+    std::vector<std::size_t> byId;
+    for (std::size_t at = 0; at < everyFound.size(); at += D + 1) byId.push_back(at);
+    std::sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return everyFound[a] < everyFound[b]; });
+    for (const std::size_t at : byId) {
+        listed_.insert(static_cast<std::int64_t>(everyFound[at]));
+        std::string line = fmt::format("{:.9g} {}", t, static_cast<std::int64_t>(everyFound[at]));
+        for (int d = 0; d < D; ++d) line += fmt::format(" {:.9g}", everyFound[at + 1 + static_cast<std::size_t>(d)]);
+        firstFound_.append(line);
     }
     const auto total = static_cast<std::size_t>(reductions_.sum(static_cast<double>(behind)));
     most_ = std::max(most_, total);

@@ -13,7 +13,8 @@
 // is at most s_j/2 (2D) or s_j/sqrt(2) (3D) away. A particle that has been beyond a free end is
 // not counted while it stays behind a wall (it came down the wall's back, outside the tank)
 // until it is in front of one again: the object remembers such particles by id from execution
-// to execution, so a restart forgets them.
+// to execution, so a restart forgets them. Where the leaks are: behindWall.dat beside it lists
+// each particle the first time it is counted (time, id, position), for ParaView's selection by id.
 // Example (system/controlDict, functions):
 //   leaks { type wallPenetrations; }
 #pragma once
@@ -40,8 +41,10 @@ public:
 private:
     const Reductions& reductions_;  // over the processes that share the particles
     TimeSeriesFile out_;
+    TimeSeriesFile firstFound_;  // behindWall.dat
     std::size_t most_ = 0;
     std::unordered_set<std::int64_t> aroundFreeEnd_;  // ids, alike on every process
+    std::unordered_set<std::int64_t> listed_;         // ids in behindWall.dat, alike on every process
 };
 
 }  // namespace sph

@@ -703,6 +703,12 @@ TEST(WallPenetrations, FluidThatCameDownAWallsBackIsNotCountedUntilItIsInFrontAg
     std::getline(written, line);
     while (std::getline(written, line)) counts += line.substr(line.find(' ') + 1) + "; ";
     EXPECT_EQ(counts, "0 0; 0 0; 1 1; 1 1; 2 2; ");
+    // Each leak where and when it was first counted, for ParaView's selection by id.
+    std::ifstream found(dir / "behindWall.dat");
+    std::string listed;
+    std::getline(found, line);
+    while (std::getline(found, line)) listed += line + "; ";
+    EXPECT_EQ(listed, fmt::format("2 1 {:.9g} 0.3; 4 0 {:.9g} 0.8; ", -0.2 * dx, -0.2 * dx));
 }
 
 TEST(WallPenetrations, FluidBeyondAPlatesRimIsNotBehindItIn3D) {
