@@ -66,6 +66,18 @@ std::unique_ptr<FluidSystem<D>> system(ParticleSet<D> fluid, ParticleSet<D> wall
 
 Dictionary dictionary(const std::string& text) { return Dictionary::fromString(text, "boundaryProperties"); }
 
+// A tank's side wall x = 0 (normal +x, one layer of 20) whose top particle is at y = 0.975, half
+// a spacing below its open end at y = 1, with `fluid` beside it on `model` (h = 1.3 dx).
+std::unique_ptr<FluidSystem<2>> besideAnOpenSideWall(const std::vector<Vec<2>>& fluid, std::unique_ptr<BoundaryModel<2>> model) {
+    std::vector<Vec<2>> walls;
+    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
+    return system<2>(fluidSet<2>(fluid), wallSet<2>(walls, Vec<2>(1, 0), dx), std::move(model), 1.3 * dx, Vec<2>(-1, -1), Vec<2>(1, 2));
+}
+
+std::unique_ptr<BoundaryModel<2>> monaghanKajtarWall() {
+    return std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(1.3 * dx)));
+}
+
 // A block nx x ny of fluid at spacing dx from x = 0 and y = 0, beside walls of `walls`.
 std::vector<Vec<2>> block(int nx, int ny) {
     std::vector<Vec<2>> positions;
@@ -657,15 +669,7 @@ TEST(WallPenetrations, FluidBeyondAWallsFreeEndIsNotBehindIt) {
     // spacings above it, within a spacing along the plane, it is taken as behind (the nearest
     // particle along a wall is at most half a spacing away). Below the top, behind the plane,
     // it has leaked.
-    const double h = 1.3 * dx;
-    std::vector<Vec<2>> walls;
-    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
-    const auto behindAt = [&](const Vec<2>& x) {
-        auto s = system<2>(fluidSet<2>({x}), wallSet<2>(walls, Vec<2>(1, 0), dx),
-                           std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
-                           Vec<2>(-1, -1), Vec<2>(1, 2));
-        return WallPenetrations<2>::count(s->view());
-    };
+    const auto behindAt = [](const Vec<2>& x) { return WallPenetrations<2>::count(besideAnOpenSideWall({x}, monaghanKajtarWall())->view()); };
     EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx)), 0u);  // the nearest-plane test alone: 1
     EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.975 + 0.8 * dx)), 1u);
     EXPECT_EQ(behindAt(Vec<2>(-0.3 * dx, 0.5)), 1u);
@@ -676,12 +680,7 @@ TEST(WallPenetrations, FluidThatCameDownAWallsBackIsNotCountedUntilItIsInFrontAg
     // (1.2 spacings above its last particle, outside its plane), comes down the wall's back
     // (behind it, beside its particles: a snapshot counts it), is pushed back in front, and
     // then leaks through the wall: only the leak counts. Particle 1 leaks at the third step.
-    const double h = 1.3 * dx;
-    std::vector<Vec<2>> walls;
-    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
-    auto s = system<2>(fluidSet<2>({Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx), Vec<2>(0.5 * dx, 0.3)}), wallSet<2>(walls, Vec<2>(1, 0), dx),
-                       std::make_unique<RepulsiveWall<2>>(readRepulsionLaw(dictionary("type monaghanKajtar; K 1;"), contextFor(h))), h,
-                       Vec<2>(-1, -1), Vec<2>(1, 2));
+    auto s = besideAnOpenSideWall({Vec<2>(-0.3 * dx, 0.975 + 1.2 * dx), Vec<2>(0.5 * dx, 0.3)}, monaghanKajtarWall());
     const auto dir = sph::test::freshDirectory();
     WallPenetrations<2> leaks(dictionary("type wallPenetrations;"), {dir, dir, rho0, s->view()});
     auto& x = s->fluid.position;
@@ -737,14 +736,9 @@ TEST(DeficiencyCorrection, WallDistancePenaltyLeavesAloneFluidBeyondAWallsFreeEn
     // gone over the top: no wall holds it, and the partner gives nothing (taken for a crossing,
     // the spring of the wall's planes pushed it back in, +x). The same fluid beside the wall,
     // behind it, is pushed out.
-    const double h = 1.3 * dx;
-    std::vector<Vec<2>> walls;
-    for (int i = 0; i < 20; ++i) walls.push_back(Vec<2>(0.0, (i + 0.5) * dx));
-    const auto penaltyAt = [&](const Vec<2>& x) {
-        auto s = system<2>(fluidSet<2>({x}), wallSet<2>(walls, Vec<2>(1, 0), dx),
-                           std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
-                               dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(h), "c"),
-                           h, Vec<2>(-1, -1), Vec<2>(1, 2));
+    const auto penaltyAt = [](const Vec<2>& x) {
+        auto s = besideAnOpenSideWall({x}, std::make_unique<DeficiencyCorrection<2, DeficiencyWeightingBoundaryIntegral>>(
+                                               dictionary("type deficiencyCorrectionBoundaryIntegral;"), contextFor(1.3 * dx), "c"));
         s->evaluateRates(0.0);
         return Vec<2>(s->fluid[fields::acceleration][0] - s->fluid[fields::boundaryCorrection][0]);
     };
