@@ -48,6 +48,10 @@ public:
     // pass reads values that another pass computed over its own neighbours.
     virtual double reach(double support) const { return support; }
 
+    // True when addWallForces() adds a viscous stress of its own (a wall-force model's no-slip
+    // wall): an integrator that takes the fluid's viscosity implicitly would take it explicitly.
+    virtual bool addsViscousStress() const { return false; }
+
     // True when addWallForces() reads the fluid's acceleration before any wall force.
     virtual bool needsUncorrectedAcceleration() const { return false; }
 

@@ -5,6 +5,7 @@
 #include "boundaryModels/WallPressureExtrapolation.hpp"
 #include "neighbourSearch/WallSide.hpp"
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 #include <omp.h>
@@ -44,6 +45,48 @@ void keepNearest(std::vector<std::pair<double, std::uint32_t>>& candidates, int 
     const auto last = std::partition(candidates.begin() + static_cast<std::ptrdiff_t>(k), candidates.end(),
                                      [&](const auto& candidate) { return candidate.first <= tied; });
     candidates.erase(last, candidates.end());
+}
+
+// The flux through wall particle j's element (area A, centre at x_i - r) summed over sub-elements
+// across it, 5 along a 2D wall's segment and 3 x 3 on a 3D wall's square, not at its centre
+// alone: the first fluid row lies half a spacing from the wall, nearer the centre than the element
+// is wide, and the centre alone gave a linear shear flow's first row 17 % more stress than the
+// virtual particles' integral (a Poiseuille flow at H/dx = 20 lost 4.5 % of its speed).
+template <int D>
+double subdividedFlux(const KernelOutsideFraction<D>& flux, const Vec<D>& r, double height, const Vec<D>& normal, double area) {
+    if constexpr (D == 1) {
+        return flux.element(std::abs(r[0]), height, area);
+    } else if constexpr (D == 2) {
+        const Vec<D> along = 0.2 * area * Vec<D>(-normal.y(), normal.x());
+        double sum = 0.0;
+        for (int a = -2; a <= 2; ++a) sum += flux.element((r - a * along).norm(), height, 0.2 * area);
+        return sum;
+    } else {
+        const Vec<D> axis = std::abs(normal.x()) < 0.9 ? Vec<D>::UnitX() : Vec<D>::UnitY();
+        const Vec<D> first = normal.cross(axis).normalized(), second = normal.cross(first);
+        const double third = std::sqrt(area) / 3.0;
+        double sum = 0.0;
+        for (int a = -1; a <= 1; ++a)
+            for (int b = -1; b <= 1; ++b) sum += flux.element((r - (a * third) * first - (b * third) * second).norm(), height, area / 9.0);
+        return sum;
+    }
+}
+
+// Calls visit(j, stencil) for each of the patch's wall particles in the patch list's cell order,
+// with the fluid's stencil around its cell: the particles of a cell share it (the two lists have
+// one grid). Called inside a parallel region, it shares the particles over the threads.
+template <int D, class Visit>
+void forEachWallParticleWithItsFluidStencil(const CellLinkedList<D>& patchCells, const CellLinkedList<D>& fluidCells, Visit&& visit) {
+    typename CellLinkedList<D>::StencilRanges stencil;
+    std::uint32_t stencilCell = std::numeric_limits<std::uint32_t>::max();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < patchCells.pointCount(); ++k) {
+        if (patchCells.cellAt(k) != stencilCell) {
+            stencilCell = patchCells.cellAt(k);
+            stencil = fluidCells.stencilRanges(patchCells.sortedPosition(k));
+        }
+        visit(patchCells.sortedIndex(k), stencil);
+    }
 }
 
 }  // namespace
@@ -103,6 +146,14 @@ DeficiencyCorrection<D, Weighting>::DeficiencyCorrection(const Dictionary& dict,
     }
     smoothing_ = dict.getOrDefault("temporalSmoothing", 1.0);
     if (!(smoothing_ > 0.0 && smoothing_ <= 1.0)) dict.fail("temporalSmoothing", fmt::format("must lie in (0, 1], found {:g}", smoothing_));
+    noSlip_ = dict.getOrDefault("noSlip", context.laminarViscosity);
+    if (noSlip_ && !context.laminarViscosity)
+        dict.fail("noSlip",
+                  "a no-slip wall on the correction needs viscosity laminar in system/sphSchemes (its virtual particles carry the laminar "
+                  "stress); with artificial viscosity or none its walls are free-slip: noSlip no");
+    nu_ = noSlip_ ? context.nu : 0.0;
+    smoothingLength_ = context.h;
+    spacing_ = context.dx;
 }
 
 template <int D, class Weighting>
@@ -112,6 +163,7 @@ std::string DeficiencyCorrection<D, Weighting>::describe() const {
     if (calibration_ != DeficiencyCalibration::WallPressure)
         text += fmt::format(", sample {}, temporalSmoothing {:g}",
                             sampleSize_ > 0 ? fmt::format("nearest {}", sampleSize_) : fmt::format("within radius {:g}", sampleRadius_), smoothing_);
+    text += noSlip_ ? ", noSlip yes" : ", noSlip no";
     return text + ", repulsion " +
            (repulsion_ ? sph::describe(*repulsion_)
                        : fmt::format("wallDistance: K {:g}, damping {:g}, distance {:g}, springDistance {:g}, closingSpeed {}", penalty_.K,
@@ -125,6 +177,16 @@ void DeficiencyCorrection<D, Weighting>::addFields(const BoundaryView<D>& view) 
     view.walls.add(fields::acceleration, Vec<D>::Zero(), false);
     if (sampleSize_ > 0) sampleRadius_ = view.supportRadius;
     outsideFraction_ = std::visit([](const auto& kernel) { return KernelOutsideFraction<D>(kernel); }, view.kernel);
+    if (noSlip_) {
+        const double regularisation = 0.01 * smoothingLength_ * smoothingLength_;
+        std::visit(
+            [&](const auto& kernel) {
+                const auto laminar = [&](double s) { return kernel.gradientFactor(s) * s * s / (s * s + regularisation); };
+                viscousFlux_ = KernelOutsideFraction<D>(kernel.supportRadius(), laminar);
+                viscousDepth_ = MeanDepthBehindPlane<D>(kernel.supportRadius(), laminar);
+            },
+            view.kernel);
+    }
 }
 
 template <int D, class Weighting>
@@ -172,6 +234,7 @@ void DeficiencyCorrection<D, Weighting>::addWallForces(const BoundaryView<D>& vi
             });
         });
     });
+    if (noSlip_) std::visit([&](const auto& kernel) { applyNoSlip(view, patchCells, kernel); }, view.kernel);
     if (repulsion_) addRepulsion(view, patchCells, *repulsion_);
 }
 
@@ -246,20 +309,11 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
     const bool literal = calibration_ == DeficiencyCalibration::Literal;
     const Vec<D>* areaIntegral = separateAreaIntegral(radialDirection_) ? areaIntegral_.data() : blend_.data();
     const auto& fluidCells = view.fluidCells;
-    // Each wall particle's pressure, density, scale R_j and push, in the patch list's cell order:
-    // the particles of a cell share the fluid's stencil (the two lists have one grid).
+    // Each wall particle's pressure, density, scale R_j and push.
 #pragma omp parallel
     {
         std::vector<std::pair<double, std::uint32_t>> sample;  // one per thread, reused
-        typename CellLinkedList<D>::StencilRanges stencil;
-        std::uint32_t stencilCell = std::numeric_limits<std::uint32_t>::max();
-#pragma omp for schedule(static)
-        for (std::size_t k = 0; k < patchCells.pointCount(); ++k) {
-            const std::size_t j = patchCells.sortedIndex(k);
-            if (patchCells.cellAt(k) != stencilCell) {
-                stencilCell = patchCells.cellAt(k);
-                stencil = fluidCells.stencilRanges(patchCells.sortedPosition(k));
-            }
+        forEachWallParticleWithItsFluidStencil(patchCells, fluidCells, [&](std::size_t j, const auto& stencil) {
             WallPressureExtrapolation<D> extrapolation;
             double scaleNumerator = 0.0, scaleDenominator = 0.0;
             fluidCells.forEachNeighbour(stencil, xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
@@ -278,7 +332,7 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
             if constexpr (WallPressure) {
                 push_[j] = pj * scale / rhoj;
                 C[j] = uniformCoefficient;
-                continue;
+                return;
             }
             sample.clear();
             fluidCells.forEachNeighbour(xWall[j], sampleRadius_, [&](std::uint32_t s, const Vec<D>&, double r2) { sample.emplace_back(r2, s); });
@@ -292,7 +346,7 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
             const double fresh = denominator > 1e-12 * kernel.value(0.0) ? std::clamp(numerator / denominator, 2.0 * uniformCoefficient, 0.0) : 0.0;
             C[j] = (1.0 - lambda) * C[j] + lambda * fresh;
             push_[j] = -C[j];
-        }
+        });
     }
 }
 
@@ -366,6 +420,53 @@ void DeficiencyCorrection<D, Weighting>::applyCorrection(const BoundaryView<D>& 
         correction[i] += sum;
         if constexpr (WallPressure)
             if (densityRate) densityRate[i] += rate;
+    }
+}
+
+template <int D, class Weighting>
+template <class Kernel>
+void DeficiencyCorrection<D, Weighting>::applyNoSlip(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel) {
+    const std::size_t n = view.fluid.ownedCount();
+    const Vec<D>* v = view.fluid[fields::velocity].data();
+    const double* rho = view.fluid[fields::density].data();
+    Vec<D>* a = view.fluid[fields::acceleration].data();
+    Vec<D>* correction = view.fluid[fields::boundaryCorrection].data();
+    const Vec<D>* xWall = view.walls.position.data();
+    const Vec<D>* vWall = view.walls[fields::velocity].data();
+    const Vec<D>* normal = view.walls[fields::normal].data();
+    const double* area = view.walls[fields::area].data();
+    const double* rhoWall = view.walls[fields::density].data();
+    const double radius = view.supportRadius;
+    const auto& fluidCells = view.fluidCells;
+    wallShear_.resize(view.walls.size());
+    // Each wall particle's G_j: the fluid's velocity relative to the wall over its height above
+    // the wall, both as the kernel weighs them around j.
+#pragma omp parallel
+    forEachWallParticleWithItsFluidStencil(patchCells, fluidCells, [&](std::size_t j, const auto& stencil) {
+        double weight = 0.0, heightSum = 0.0;
+        Vec<D> velocitySum = Vec<D>::Zero();
+        fluidCells.forEachNeighbour(stencil, xWall[j], radius, [&](std::uint32_t s, const Vec<D>& r, double r2) {
+            const double W = kernel.value(std::sqrt(r2));
+            weight += W;
+            heightSum -= W * r.dot(normal[j]);  // r = x_j - x_s
+            velocitySum += W * v[s];
+        });
+        wallShear_[j] = weight > 0.0 ? Vec<D>((velocitySum / weight - vWall[j]) / std::max(heightSum / weight, 0.5 * spacing_)) : Vec<D>::Zero();
+    });
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+        const PairRange range = pairRanges_[i];
+        const WallPair* pairs = pairsPerThread_[range.thread].data();
+        Vec<D> stress = Vec<D>::Zero();
+        for (std::uint32_t k = range.begin; k < range.end; ++k) {
+            const WallPair& pair = pairs[k];
+            const std::uint32_t j = pair.wall;
+            const double height = pair.r.dot(normal[j]);
+            const double flux = subdividedFlux(viscousFlux_, pair.r, height, normal[j], area[j]);
+            stress += (nu_ * (1.0 + rhoWall[j] / rho[i]) * flux) * (v[i] - vWall[j] + viscousDepth_(height) * wallShear_[j]);
+        }
+        a[i] += stress;
+        correction[i] += stress;
     }
 }
 

@@ -27,7 +27,18 @@
 //     (KernelOutsideFraction: sum_j A_j Psi(|r_ij|) (r_ij.n_j)/|r_ij|), and with continuity
 //     density their compression  drho_i/dt += -sum_j rho_j R_j W_ij wn_ij (v_i - v_j).d_ij
 //     (the paper's calibration, which cancels accelerations, blew up a hydrostatic tank with it);
-//  4. the partner: the wallDistance damper (default, WallDistancePenalty) or a discrete law
+//  4. with laminar viscosity at a no-slip wall (noSlip, the default there), the virtual
+//     particles' laminar stress (Morris et al. 1997, the fluid's own term):
+//       a_i += sum_j nu (1 + rho_j/rho_i) Phi_ij (v_i - v_j + G_j delta(r_ij.n_j)),
+//     Phi_ij = A_j Psi_f(|r_ij|) (r_ij.n_j)/|r_ij| the integral of f(s) = s W'(s)/(s^2 + 0.01 h^2)
+//     over the space behind the wall (KernelOutsideFraction with f, summed over 5 sub-elements
+//     of a 2D wall particle's segment or 3 x 3 of a 3D one's square): the virtual particles'
+//     velocity is the fluid's extrapolated linearly through the wall's, v_j - G_j depth, with
+//     G_j = (v^_j - v_j) / max(y^_j, dx/2), v^_j and y^_j the Shepard means of the fluid's
+//     velocity and height above the wall around j, and delta the mean depth that f samples
+//     behind a flat wall (MeanDepthBehindPlane): exact for a linear shear flow past a flat wall.
+//     Without it the walls are free-slip: a Poiseuille flow accelerated as a plug;
+//  5. the partner: the wallDistance damper (default, WallDistancePenalty) or a discrete law
 //     (Monaghan & Kajtar 2009, Lennard-Jones) adds its force. The damper blends the wall
 //     particles whose tangent plane fluid i lies in front of, and all of them where i lies
 //     behind its nearest wall particle's plane (it has crossed the wall): fluid beyond a convex
@@ -51,6 +62,7 @@
 //       // calibrated and literal only:
 //       sample            { type nearest; size 4; } // or { type withinRadius; radius 0.02; }
 //       temporalSmoothing 1;                        // lambda in (0, 1]; 1: none
+//       noSlip            yes;   // with viscosity laminar (the default there); free slip otherwise
 //   }
 #pragma once
 
@@ -58,6 +70,7 @@
 #include "boundaryModels/RepulsiveWall.hpp"
 #include "boundaryModels/WallDistancePenalty.hpp"
 #include "kernels/KernelOutsideFraction.hpp"
+#include "kernels/MeanDepthBehindPlane.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -76,6 +89,7 @@ public:
     bool actsThroughWallParticles() const override { return false; }
     bool setsWallPressure() const override { return true; }  // p_j, extrapolated for the virtual particles
     bool needsUncorrectedAcceleration() const override { return calibration_ != DeficiencyCalibration::WallPressure; }
+    bool addsViscousStress() const override { return noSlip_; }
     std::string describe() const override;
     // Fluid i reads the push of walls j within r_inf, whose R_j (and sample) reads the fluid s
     // within r_inf (the sample radius), whose blends read the walls within r_inf of s.
@@ -94,6 +108,9 @@ private:
                           const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner, bool MeanClosingSpeed>
     void applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity);
+    // The virtual particles' laminar stress at a no-slip wall, over the pairs pass 1 kept.
+    template <class Kernel>
+    void applyNoSlip(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel);
     // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
     static constexpr bool separateAreaIntegral(bool radial) { return Weighting::normalised || radial; }
     // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.
@@ -113,6 +130,10 @@ private:
     int sampleSize_;       // nearest-k sample; 0 when sampling by radius
     double sampleRadius_;  // radius of the sample (the kernel support for nearest-k)
     double smoothing_;
+    bool noSlip_;
+    double nu_;               // the laminar viscosity's, with noSlip
+    double smoothingLength_;  // h, for the laminar term's 0.01 h^2
+    double spacing_;          // dx, the least height y^_j
     bool firstEvaluation_ = true;
     bool repeatWrittenCoefficients_ = false;  // restart: the written C_j already hold this evaluation's
     // A fluid-wall pair within the support, found once per evaluation (pass 1) and read again
@@ -134,8 +155,11 @@ private:
     std::vector<Vec<D>> blend_;          // c_i
     std::vector<Vec<D>> areaIntegral_;   // g_i, where it differs from c_i
     KernelOutsideFraction<D> outsideFraction_;
-    std::vector<double> push_;            // per wall particle: p_j R_j / rho_j, or -C_j
-    std::vector<double> virtualDensity_;  // per wall particle: rho_j R_j
+    std::vector<double> push_;              // per wall particle: p_j R_j / rho_j, or -C_j
+    std::vector<double> virtualDensity_;    // per wall particle: rho_j R_j
+    KernelOutsideFraction<D> viscousFlux_;  // Phi_ij, with noSlip
+    MeanDepthBehindPlane<D> viscousDepth_;  // delta, with noSlip
+    std::vector<Vec<D>> wallShear_;         // per wall particle: G_j, with noSlip
 };
 
 }  // namespace sph

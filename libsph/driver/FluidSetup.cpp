@@ -342,6 +342,7 @@ CaseSetup<D> setUpCase(const std::filesystem::path& caseDirectory, const TimeDir
     ModelContext context = modelContext(properties, dx, h);
     FluidModels<D> models = selectFluidModels<D>(schemes, std::move(kernel), properties, context);
     context.artificialViscosity = std::holds_alternative<ArtificialViscosityMonaghan1992>(models.viscosity);
+    context.laminarViscosity = std::holds_alternative<LaminarViscosityMorris1997>(models.viscosity);
 
     setup.patchNames = state.wallHeader.patchNames;
     setup.patchLayers = state.wallHeader.patchLayers;

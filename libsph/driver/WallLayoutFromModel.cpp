@@ -5,6 +5,8 @@
 #include "driver/CaseDirectory.hpp"
 #include "io/SelectByType.hpp"
 #include "kernels/Kernel.hpp"
+#include "viscosity/ArtificialViscosityMonaghan1992.hpp"
+#include "viscosity/LaminarViscosityMorris1997.hpp"
 
 #include <fmt/format.h>
 
@@ -26,13 +28,17 @@ const Dictionary* WallLayoutFromModel<D>::modelOf(const std::string& name) {
         h_ = kernelDict.getPositive("hdx") * dx_;
         const Kernel<D> kernel = selectByType(makeKernelRegistry<D>(), kernelDict, h_);
         support_ = std::visit([](const auto& k) { return k.supportRadius(); }, kernel);
+        if (const Dictionary* viscosity = schemes.findSubDict("viscosity")) viscosity_ = viscosity->getOrDefault<std::string>("type", "");
     }
     return boundaryDict_->findSubDict(name);
 }
 
 template <int D>
 WallLayout WallLayoutFromModel<D>::layoutOf(const Dictionary& modelDict, std::string& note) const {
-    const auto model = selectByType(makeBoundaryModelRegistry<D>(), modelDict, modelDict, modelContext(properties_, dx_, h_));
+    ModelContext context = modelContext(properties_, dx_, h_);
+    context.artificialViscosity = viscosity_ == ArtificialViscosityMonaghan1992::name;
+    context.laminarViscosity = viscosity_ == LaminarViscosityMorris1997::name;
+    const auto model = selectByType(makeBoundaryModelRegistry<D>(), modelDict, modelDict, context);
     const std::string type = modelDict.get<std::string>("type");
     if (!model->actsThroughWallParticles()) {
         note = fmt::format("1 layer on the wall surface, for the wall-force model {}", type);

@@ -44,6 +44,7 @@ private:
     std::optional<Dictionary> boundaryDict_;
     double h_ = 0.0;
     double support_ = 0.0;
+    std::string viscosity_;  // the type in system/sphSchemes: a model's defaults may follow it (noSlip)
 };
 
 }  // namespace sph

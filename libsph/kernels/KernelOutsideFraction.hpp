@@ -6,7 +6,9 @@
 // over surface elements j of area A_j and unit normal n_j pointing out of V (into the fluid).
 // The deficiency correction takes V as the space behind the wall: the volume fraction of
 // virtual particles (1 - gamma_i of Ferrand et al. 2013, here from the wall particles' areas).
-// int_r^R W(s) s^(D-1) ds is tabulated once (Simpson's rule, 2048 intervals) and interpolated.
+// Any radial function f that vanishes beyond R integrates the same way with f in place of W: the
+// correction's no-slip wall takes the laminar viscosity's f(s) = s W'(s)/(s^2 + 0.01 h^2).
+// int_r^R f(s) s^(D-1) ds is tabulated once (Simpson's rule, 2048 intervals) and interpolated.
 #pragma once
 
 #include <algorithm>
@@ -20,8 +22,11 @@ class KernelOutsideFraction {
 public:
     KernelOutsideFraction() = default;
     template <class Kernel>
-    explicit KernelOutsideFraction(const Kernel& kernel) : support_(kernel.supportRadius()), step_(support_ / intervals) {
-        const auto integrand = [&](double s) { return kernel.value(s) * std::pow(s, D - 1); };
+    explicit KernelOutsideFraction(const Kernel& kernel)
+        : KernelOutsideFraction(kernel.supportRadius(), [&kernel](double s) { return kernel.value(s); }) {}
+    template <class RadialFunction>
+    KernelOutsideFraction(double support, const RadialFunction& f) : support_(support), step_(support_ / intervals) {
+        const auto integrand = [&](double s) { return f(s) * std::pow(s, D - 1); };
         tail_.assign(intervals + 1, 0.0);
         for (int k = intervals - 1; k >= 0; --k) {
             const double a = k * step_, b = a + step_;

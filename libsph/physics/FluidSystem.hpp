@@ -76,6 +76,7 @@ public:
     void predictBodies(double halfDt) override;
     void correctBodies(double dt) override;
     std::vector<std::string> freeBodyPatches() const override;
+    std::vector<std::string> patchesWithWallViscousStress() const override;
 
     // Takes other particles with the fields of these (a rank's share of a decomposed case, owned
     // particles and halo copies together, walls in the order of the set they replace): each

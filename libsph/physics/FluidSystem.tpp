@@ -280,6 +280,14 @@ std::vector<std::string> FluidSystem<D>::freeBodyPatches() const {
 }
 
 template <int D>
+std::vector<std::string> FluidSystem<D>::patchesWithWallViscousStress() const {
+    std::vector<std::string> names;
+    for (const Patch<D>& patch : patches)
+        if (patch.model && patch.model->addsViscousStress()) names.push_back(patch.name);
+    return names;
+}
+
+template <int D>
 void FluidSystem<D>::computeSummationDensity() {
     std::visit(
         [this](const auto& kernel) {

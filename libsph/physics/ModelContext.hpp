@@ -14,6 +14,9 @@ struct ModelContext {
     // The fluid's viscosity is artificial (Monaghan's): a wall's viscous velocity then only
     // damps, and a no-slip wall acts as friction (DummyParticlesAdami2012.hpp).
     bool artificialViscosity = false;
+    // The fluid's viscosity is laminar (Morris'): the deficiency correction's virtual particles
+    // then carry its stress at a no-slip wall (DeficiencyCorrection.hpp).
+    bool laminarViscosity = false;
 };
 
 }  // namespace sph

@@ -53,6 +53,10 @@ void ArkodeArkStepImex<D>::checkCompatible(const IntegrableSystem<D>& system, co
     if (krylov_.jacobian == JacobianTimesVector::VelocityBlock && !std::holds_alternative<LaminarViscosityMorris1997>(system.viscosity()))
         dict.fail("jacobianTimesVector", "velocityBlock is exact only for a viscosity linear in velocity (laminar); the case selects " +
                                              sph::describe(system.viscosity()) + "; use differenceQuotient");
+    for (const std::string& patch : system.patchesWithWallViscousStress())
+        dict.fail("type", "arkodeIMEX takes the fluid's viscosity implicitly, but wall patch '" + patch +
+                              "' adds its laminar stress among the wall forces (the deficiency correction's noSlip), which it would take "
+                              "explicitly, beyond their stable step; use an explicit integrator or cvode, or noSlip no on that patch");
 }
 
 template <int D>

@@ -44,6 +44,9 @@ public:
     virtual void predictBodies(double halfDt) = 0;
     virtual void correctBodies(double dt) = 0;
     virtual std::vector<std::string> freeBodyPatches() const = 0;
+    // The wall patches whose model adds a viscous stress among its wall forces, which an
+    // evaluation of the viscous terms alone leaves out.
+    virtual std::vector<std::string> patchesWithWallViscousStress() const = 0;
 
     virtual bool continuity() const = 0;          // the fluid's density follows densityRate
     virtual bool wallDensityEvolves() const = 0;  // so does the walls' (dynamic boundary)

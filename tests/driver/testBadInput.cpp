@@ -380,6 +380,23 @@ TEST(BadInput, VelocityBlockJacobianNeedsLaminarViscosity) {
     expectContains(failureOf(dir), "velocityBlock is exact only for a viscosity linear in velocity (laminar)");
 }
 
+TEST(BadInput, ImplicitViscosityBesideTheCorrectionsNoSlipWall) {
+    const auto dir = copyCase("poiseuille2D");  // laminar viscosity: the correction's walls default to no-slip
+    replaceInFile(dir / "system/generateParticlesDict", "layers 3; ", "");
+    replaceInFile(dir / "system/generateParticlesDict", "layers 3; ", "");
+    writeFile(dir / "constant/boundaryProperties",
+              "floor { type deficiencyCorrectionBoundaryIntegral; }\nceiling { type deficiencyCorrectionBoundaryIntegral; }\n");
+    replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type arkodeIMEX;");
+    expectContains(failureOf(dir), "arkodeIMEX takes the fluid's viscosity implicitly, but wall patch 'floor' adds its laminar stress");
+}
+
+TEST(BadInput, NoSlipOnTheCorrectionNeedsLaminarViscosity) {
+    const auto dir = copyCase("damBreak2D");  // artificial viscosity
+    writeFile(dir / "constant/boundaryProperties", "tank { type deficiencyCorrectionBoundaryIntegral; noSlip yes; }\n");
+    expectContains(failureOf(dir),
+                   "keyword 'noSlip' in dictionary 'boundaryProperties/tank': a no-slip wall on the correction needs viscosity laminar");
+}
+
 TEST(BadInput, FreeBodyWithAnIntegratorThatCannotAdvanceIt) {
     const auto dir = copyCase("sinkingCylinder2D");
     replaceInFile(dir / "system/timeIntegration", "type symplectic;", "type verlet;");

@@ -128,6 +128,7 @@ public:
     void predictBodies(double) override {}
     void correctBodies(double) override {}
     std::vector<std::string> freeBodyPatches() const override { return {}; }
+    std::vector<std::string> patchesWithWallViscousStress() const override { return {}; }
     bool continuity() const override { return false; }
     bool wallDensityEvolves() const override { return false; }
     StateScales scales() const override { return {1.0, 1.0, 1.0}; }

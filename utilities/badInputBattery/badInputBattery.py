@@ -199,6 +199,9 @@ add("inconsistent models", "a free body with `verlet`", [edit(TIME, "type symple
 add("inconsistent models", "a wall-force model on 3 layers", [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; }")],
     "acts from one layer of wall particles on the wall surface, but patch 'tank' has 3 layers")
 add("inconsistent models", "dummy particles on one layer", [edit(PARTICLES, "layers 3;", "layers 1;")], "needs at least")
+add("inconsistent models", "the correction's `noSlip yes` with artificial viscosity",
+    [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrectionBoundaryIntegral; noSlip yes; }"),
+     edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "a no-slip wall on the correction needs viscosity laminar")
 add("inconsistent models", "`sample` with the wallPressure calibration",
     [edit(BOUNDARY, "tank        { type dummyParticles; noSlip no; }", "tank { type deficiencyCorrection; sample 6; }"),
      edit(PARTICLES, "layers 3;", "layers 1; firstLayerOffset 0;")], "sample")

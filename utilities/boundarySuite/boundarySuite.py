@@ -96,7 +96,7 @@ FLOW_MODELS = [
     ("deficiencyCorrectionBoundaryIntegral (closingSpeed each)",
      "type deficiencyCorrectionBoundaryIntegral; repulsion { type wallDistance; closingSpeed each; }", "surface"),
     ("deficiencyCorrection", "type deficiencyCorrection;", "surface"),
-    ("dummyParticles", "type dummyParticles; noSlip no;", "layers"),
+    ("dummyParticles", "type dummyParticles;", "layers"),  # noSlip as the viscosity makes it: the correction's default too
     ("dynamicBoundary", "type dynamicBoundary;", "layers"),
     ("modifiedDynamicBoundary", "type modifiedDynamicBoundary;", "layers"),
 ]
