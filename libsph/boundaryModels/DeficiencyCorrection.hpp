@@ -72,6 +72,7 @@
 #include "kernels/KernelOutsideFraction.hpp"
 #include "kernels/MeanDepthBehindPlane.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <type_traits>
@@ -100,17 +101,17 @@ public:
 
 private:
     // The three passes of an evaluation: the fluid particles' weights and blends, the wall
-    // particles' pressures and pushes, the correction applied to the fluid.
+    // particles' pressures and pushes (and velocity gradients G_j with noSlip), the correction
+    // applied to the fluid; with noSlip a fourth adds the laminar stress.
     template <bool Radial, class Kernel>
     void weighPairs(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel);
-    template <bool WallPressure, class Kernel>
+    template <bool WallPressure, bool NoSlip, class Kernel>
     void setWallParticles(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Vec<D>& gravity, double lambda,
                           const Kernel& kernel);
     template <bool Radial, bool WallPressure, bool DistancePartner, bool MeanClosingSpeed>
     void applyCorrection(const BoundaryView<D>& view, const Vec<D>& gravity);
     // The virtual particles' laminar stress at a no-slip wall, over the pairs pass 1 kept.
-    template <class Kernel>
-    void applyNoSlip(const BoundaryView<D>& view, const CellLinkedList<D>& patchCells, const Kernel& kernel);
+    void applyNoSlip(const BoundaryView<D>& view);
     // The area integral g_i is the blend c_i itself unless the weights or directions differ from A_j n_j.
     static constexpr bool separateAreaIntegral(bool radial) { return Weighting::normalised || radial; }
     // The direction of a pair's correction: the wall normal n_j, or radial (x_i - x_j) / r_ij.
@@ -155,11 +156,12 @@ private:
     std::vector<Vec<D>> blend_;          // c_i
     std::vector<Vec<D>> areaIntegral_;   // g_i, where it differs from c_i
     KernelOutsideFraction<D> outsideFraction_;
-    std::vector<double> push_;              // per wall particle: p_j R_j / rho_j, or -C_j
-    std::vector<double> virtualDensity_;    // per wall particle: rho_j R_j
-    KernelOutsideFraction<D> viscousFlux_;  // Phi_ij, with noSlip
-    MeanDepthBehindPlane<D> viscousDepth_;  // delta, with noSlip
-    std::vector<Vec<D>> wallShear_;         // per wall particle: G_j, with noSlip
+    std::vector<double> push_;                        // per wall particle: p_j R_j / rho_j, or -C_j
+    std::vector<double> virtualDensity_;              // per wall particle: rho_j R_j
+    KernelOutsideFraction<D> viscousFlux_;            // Phi_ij, with noSlip
+    MeanDepthBehindPlane<D> viscousDepth_;            // delta, with noSlip
+    std::vector<Vec<D>> wallShear_;                   // per wall particle: G_j, with noSlip
+    std::vector<std::array<Vec<D>, 2>> elementAxes_;  // per wall particle: its sub-elements' steps, with noSlip
 };
 
 }  // namespace sph

@@ -708,6 +708,45 @@ TEST(DeficiencyCorrection, NoSlipWallGivesALinearShearFlowTheVirtualParticlesStr
     }
 }
 
+TEST(DeficiencyCorrection, NoSlipWallGivesALinearShearFlowTheVirtualParticlesStressIn3D) {
+    // The same in 3D: u = gamma z over a 20 x 20 x 6 block on a floor of 20 x 20 wall particles
+    // (spacing dx, area dx^2), against rings about the normal (behindTheFloor<3>).
+    const double h = 1.3 * dx, nu = 1e-3, gamma = 2.0;
+    const CubicSplineMonaghanLattanzio1985<3> kernel(h);
+    const auto f = laminarRadialFunction(kernel, h);
+    ModelContext context = contextFor(h);
+    context.nu = nu;
+    context.laminarViscosity = true;
+    std::vector<Vec<3>> fluid, walls;
+    for (int k = 0; k < 6; ++k)
+        for (int j = 0; j < 20; ++j)
+            for (int i = 0; i < 20; ++i) fluid.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx));
+    for (int j = 0; j < 20; ++j)
+        for (int i = 0; i < 20; ++i) walls.push_back(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, 0.0));
+    const auto wallAcceleration = [&](const std::string& noSlip) {
+        const auto dict = dictionary("type deficiencyCorrectionBoundaryIntegral; noSlip " + noSlip + ";");
+        auto s = system<3>(fluidSet<3>(fluid), wallSet<3>(walls, Vec<3>(0, 0, 1), dx),
+                           std::make_unique<DeficiencyCorrection<3, DeficiencyWeightingBoundaryIntegral>>(dict, context, "c"), h,
+                           Vec<3>(-1, -1, -1), Vec<3>(2, 2, 1));
+        for (std::size_t k = 0; k < fluid.size(); ++k) s->fluid[fields::velocity][k] = Vec<3>(gamma * fluid[k].z(), 0.0, 0.0);
+        s->evaluateRates(0.0);
+        return s->fluid[fields::acceleration];
+    };
+    const auto withStress = wallAcceleration("yes"), without = wallAcceleration("no");
+    double firstRow = 0.0;
+    for (const int row : {0, 1, 2}) {
+        const std::size_t k = static_cast<std::size_t>(row * 400 + 10 * 20 + 10);  // mid-floor
+        const double z = fluid[k].z(), R = kernel.supportRadius();
+        const double expected = nu * 2.0 * gamma * (z * behindTheFloor<3>(f, R, z, 0) + behindTheFloor<3>(f, R, z, 1));
+        const Vec<3> stress = withStress[k] - without[k];
+        ASSERT_LT(expected, 0.0);
+        if (row == 0) firstRow = std::abs(expected);
+        EXPECT_NEAR(stress.x(), expected, row < 2 ? 0.01 * std::abs(expected) : 1e-3 * firstRow) << "row " << row;
+        EXPECT_NEAR(stress.y(), 0.0, 1e-9 * firstRow) << "row " << row;
+        EXPECT_NEAR(stress.z(), 0.0, 1e-9 * firstRow) << "row " << row;
+    }
+}
+
 TEST(DeficiencyCorrection, NoSlipNeedsLaminarViscosity) {
     // Free slip by default with artificial viscosity or none; asked for there, an error.
     using Model = DeficiencyCorrection<2, DeficiencyWeightingJones2010>;
