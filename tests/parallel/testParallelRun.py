@@ -4,7 +4,8 @@ the same build: every written state, fluid and walls, every array of every parti
 bit (and the .csv files, where the case writes them), and the same step count, over runs of 100 to 600 steps (many cell sorts, migrations and halo
 builds; new boxes every 100 steps in some). On a periodic case without walls (taylorGreen2D), the 2D dam break as shipped (dummy
 particles), the 2D dam break on dynamic-boundary walls with each native integrator, the periodic
-channel with summation density, the deficiency correction (calibrated in a tank; the boundary
+channel with summation density, the deficiency correction (calibrated in a tank; no-slip walls in the
+periodic channel with laminar viscosity; the boundary
 integral in the dam break), mDBC (also with the ranks' cut just in front of a wall) and the repulsive walls, moving and deforming walls, a free body (a sliding lid, an oscillating tank, a
 steep bulge), delta-SPH and particle shifting, and the 3D dam break. Also: the output opens as one series in
 ParaView's reader, a stop signal writes the state where the ranks stopped, a blow-up on any rank
@@ -176,6 +177,11 @@ class ParallelRun(unittest.TestCase):
         # C_j from each wall particle's 4 nearest fluid particles, Monaghan-Kajtar repulsion: the
         # halo reaches 3 kernel supports (the correction's chain of passes).
         self.assert_equal_to_serial(self.case("rectangularTank2D", 0.6, 0.3), (2, 3), ("0.3", "0.6"))
+
+    def test_the_deficiency_corrections_no_slip_walls(self):
+        # Poiseuille's channel on the correction with laminar viscosity (noSlip): the wall's
+        # velocity gradient from the fluid around each wall particle, copies included.
+        self.assert_equal_to_serial(self.case("poiseuille2D", 0.05, 0.025, "deficiencyCorrectionBoundaryIntegral"), (2, 3), ("0.025", "0.05"))
 
     def test_the_deficiency_correction_in_the_dam_break(self):
         # With its function objects and the load on its wall-force patch (recorded at each
