@@ -356,13 +356,13 @@ void DeficiencyCorrection<D, Weighting>::setWallParticles(const BoundaryView<D>&
                 }
             });
             // G_j: the fluid's velocity relative to the wall over its height above the wall, both
-            // as the kernel weighs them around j.
-            if constexpr (NoSlip) elementAxes_[j] = elementAxes(normal[j], area[j]);
-            if constexpr (NoSlip)
+            // as the kernel weighs them around j; and the steps of j's sub-elements.
+            if constexpr (NoSlip) {
+                const double weight = extrapolation.weight;
                 wallShear_[j] =
-                    extrapolation.weight > 0.0
-                        ? Vec<D>((velocitySum / extrapolation.weight - vWall[j]) / std::max(heightSum / extrapolation.weight, 0.5 * spacing_))
-                        : Vec<D>::Zero();
+                    weight > 0.0 ? Vec<D>((velocitySum / weight - vWall[j]) / std::max(heightSum / weight, 0.5 * spacing_)) : Vec<D>::Zero();
+                elementAxes_[j] = elementAxes(normal[j], area[j]);
+            }
             const double pj = extrapolation.weight > 0.0 ? std::max(extrapolation.pressure(gravity - aWall[j]), p0) : p0;
             const double rhoj = std::visit([pj](const auto& e) { return e.density(pj); }, eos);
             const double scale = scaleDenominator > 0.0 ? scaleNumerator / scaleDenominator : 0.0;

@@ -154,6 +154,33 @@ class CorrectionCases(unittest.TestCase):
         self.assertAlmostEqual(natural_period, 1.601, delta=0.02, msg="fitted first natural period [s]")
         self.assertEqual(leaks, 0, "fluid behind the wall at some step")
 
+    def test_lid_driven_cavity_on_no_slip_walls(self):
+        # lidDrivenCavity2D as shipped (Re 100, dx = 0.02, t = 10) with the lid and the walls on the
+        # correction, one layer each: its no-slip stress (noSlip, the default with laminar
+        # viscosity) is all that drives the flow; free-slip walls read L1 0.19 / 0.12
+        # (doc/validation.md; the shipped dummy particles 2.02e-2 / 1.10e-2).
+        with tempfile.TemporaryDirectory() as work:
+            case = os.path.join(work, "lidDrivenCavity2D")
+            for part in ("system", "constant"):
+                shutil.copytree(os.path.join(ROOT, "cases", "lidDrivenCavity2D", part), os.path.join(case, part))
+            for data in glob.glob(os.path.join(ROOT, "cases", "lidDrivenCavity2D", "*.csv")):
+                shutil.copy(data, case)
+            for path, old, new in [("system/generateParticlesDict", "layers 3; open (yMax);", "open (yMax);"),
+                                   ("system/generateParticlesDict", "points ((1.06 1) (-0.06 1)); layers 3;", "points ((1 1) (0 1));"),
+                                   ("constant/boundaryProperties", "type dummyParticles; noSlip yes;", "type deficiencyCorrectionBoundaryIntegral;")]:
+                path = os.path.join(case, path)
+                with open(path) as f:
+                    text = f.read()
+                assert old in text, "%s not in %s" % (old, path)
+                with open(path, "w") as f:
+                    f.write(text.replace(old, new))
+            subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], check=True, capture_output=True)
+            subprocess.run([os.path.join(BIN, "wcsph"), "-case", case], check=True, capture_output=True)
+            with open(os.path.join(case, "postProcessing", "summary", "0", "summary.csv")) as f:
+                rows = {line.split(",")[0]: float(line.split(",")[2]) for line in f.read().splitlines()[1:]}
+        self.assertAlmostEqual(rows["uCentreLine"], 1.39e-2, delta=0.1e-2, msg="u on the vertical centre line, L1 over U, against Ghia")
+        self.assertAlmostEqual(rows["vCentreLine"], 1.02e-2, delta=0.1e-2, msg="v on the horizontal centre line, L1 over U, against Ghia")
+
 
 if __name__ == "__main__":
     unittest.main()
