@@ -15,8 +15,17 @@ BIN = os.environ.get("SPHKIT_BIN", os.path.join(ROOT, "build", "bin"))
 
 
 def run_case(work, name, edits, script):
-    """Copies cases/<name> into work, applies (file, old, new) edits, runs it and its script (a
-    case's own, or a utility beside the binaries); returns the numbers of the script's last line."""
+    """Runs the case as run_edited does, then its script (a case's own, or a utility beside the
+    binaries); returns the numbers of the script's last line."""
+    case = run_edited(work, name, edits)
+    command = [os.path.join(BIN, script)] if os.path.exists(os.path.join(BIN, script)) else ["/usr/bin/python3", os.path.join(ROOT, "cases", name, script)]
+    result = subprocess.run(command + [case], check=True, capture_output=True, text=True)
+    return [float(v) for v in result.stdout.strip().splitlines()[-1].split()[1:]]
+
+
+def run_edited(work, name, edits):
+    """Copies cases/<name> into work, applies (file, old, new) edits, generates and runs it;
+    returns its directory."""
     case = os.path.join(work, name)
     for part in ("system", "constant"):
         shutil.copytree(os.path.join(ROOT, "cases", name, part), os.path.join(case, part))
@@ -31,9 +40,7 @@ def run_case(work, name, edits, script):
             f.write(text.replace(old, new))
     subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], check=True, capture_output=True)
     subprocess.run([os.path.join(BIN, "wcsph"), "-case", case], check=True, capture_output=True)
-    command = [os.path.join(BIN, script)] if os.path.exists(os.path.join(BIN, script)) else ["/usr/bin/python3", os.path.join(ROOT, "cases", name, script)]
-    result = subprocess.run(command + [case], check=True, capture_output=True, text=True)
-    return [float(v) for v in result.stdout.strip().splitlines()[-1].split()[1:]]
+    return case
 
 
 class CorrectionCases(unittest.TestCase):
@@ -118,18 +125,9 @@ class CorrectionCases(unittest.TestCase):
         # shallowSloshing2D as shipped over its first period: the bore the sway drives across the
         # tank reaches the gauge 0.05 m from the left wall at t = 2.75 s in the whole run (the
         # elevation passing 0.02 m; the experiment's record starts later, at t/T = 8.5).
+        edits = [("system/controlDict", "endTime         33;", "endTime         3;"), ("system/controlDict", "writeInterval   0.5;", "writeInterval   3;")]
         with tempfile.TemporaryDirectory() as work:
-            case = os.path.join(work, "shallowSloshing2D")
-            for part in ("system", "constant"):
-                shutil.copytree(os.path.join(ROOT, "cases", "shallowSloshing2D", part), os.path.join(case, part))
-            shutil.copy(os.path.join(ROOT, "cases", "shallowSloshing2D", "bouscasse2013Series5.csv"), case)
-            control = os.path.join(case, "system", "controlDict")
-            with open(control) as f:
-                text = f.read()
-            with open(control, "w") as f:
-                f.write(text.replace("endTime         33;", "endTime         3;").replace("writeInterval   0.5;", "writeInterval   3;"))
-            subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], check=True, capture_output=True)
-            subprocess.run([os.path.join(BIN, "wcsph"), "-case", case], check=True, capture_output=True)
+            case = run_edited(work, "shallowSloshing2D", edits)
             with open(os.path.join(case, "postProcessing", "gauge", "0", "elevation.dat")) as f:
                 rows = [[float(v) for v in line.split()[:2]] for line in f if not line.startswith("#")]
             arrival = next(t for (_, before), (t, depth) in zip(rows, rows[1:]) if before - 0.03 < 0.02 <= depth - 0.03)
@@ -159,23 +157,11 @@ class CorrectionCases(unittest.TestCase):
         # correction, one layer each: its no-slip stress (noSlip, the default with laminar
         # viscosity) is all that drives the flow; free-slip walls read L1 0.19 / 0.12
         # (doc/validation.md; the shipped dummy particles 2.02e-2 / 1.10e-2).
+        edits = [("system/generateParticlesDict", "layers 3; open (yMax);", "open (yMax);"),
+                 ("system/generateParticlesDict", "points ((1.06 1) (-0.06 1)); layers 3;", "points ((1 1) (0 1));"),
+                 ("constant/boundaryProperties", "type dummyParticles; noSlip yes;", "type deficiencyCorrectionBoundaryIntegral;")]
         with tempfile.TemporaryDirectory() as work:
-            case = os.path.join(work, "lidDrivenCavity2D")
-            for part in ("system", "constant"):
-                shutil.copytree(os.path.join(ROOT, "cases", "lidDrivenCavity2D", part), os.path.join(case, part))
-            for data in glob.glob(os.path.join(ROOT, "cases", "lidDrivenCavity2D", "*.csv")):
-                shutil.copy(data, case)
-            for path, old, new in [("system/generateParticlesDict", "layers 3; open (yMax);", "open (yMax);"),
-                                   ("system/generateParticlesDict", "points ((1.06 1) (-0.06 1)); layers 3;", "points ((1 1) (0 1));"),
-                                   ("constant/boundaryProperties", "type dummyParticles; noSlip yes;", "type deficiencyCorrectionBoundaryIntegral;")]:
-                path = os.path.join(case, path)
-                with open(path) as f:
-                    text = f.read()
-                assert old in text, "%s not in %s" % (old, path)
-                with open(path, "w") as f:
-                    f.write(text.replace(old, new))
-            subprocess.run([os.path.join(BIN, "generateParticles"), "-case", case], check=True, capture_output=True)
-            subprocess.run([os.path.join(BIN, "wcsph"), "-case", case], check=True, capture_output=True)
+            case = run_edited(work, "lidDrivenCavity2D", edits)
             with open(os.path.join(case, "postProcessing", "summary", "0", "summary.csv")) as f:
                 rows = {line.split(",")[0]: float(line.split(",")[2]) for line in f.read().splitlines()[1:]}
         self.assertAlmostEqual(rows["uCentreLine"], 1.39e-2, delta=0.1e-2, msg="u on the vertical centre line, L1 over U, against Ghia")
