@@ -207,18 +207,24 @@ GeneratedWalls<D> generateWalls(const Dictionary* boundaries, const LatticeDomai
     return walls;
 }
 
-// A fluid lattice point less than dx/2 from a wall particle overlaps the wall. Where every such
-// particle belongs to a one-layer wall (its particles on the wall's surface) the point is moved
-// out along their normals to dx/2 in front of them rather than dropped: on a curved wall dropping
-// would remove a ring of fluid dx/2 thick and lower the water by it. Behind such a wall, or near
-// a layered wall, it is dropped.
+// A fluid lattice point less than dx/2 from a wall particle overlaps the wall, and so does one
+// less than dx/2 in front of a one-layer wall's element (its particle on the wall's surface,
+// the point within half the particle's spacing of it along the wall): on a curved or slanted
+// wall a lattice point between two wall particles can be further than dx/2 from both and 0.13
+// dx from the surface (cylinderArray2D), where the wall's force then holds it from the first
+// step. Where every such particle belongs to a one-layer wall the point is moved out along their
+// normals to dx/2 in front of them rather than dropped: on a curved wall dropping would remove a
+// ring of fluid dx/2 thick and lower the water by it. Behind such a wall, or near a layered
+// wall, it is dropped.
 template <int D>
 class WallClearance {
 public:
     WallClearance(const GeneratedWalls<D>& walls, const SparseCellList<D>& wallCells, double dx)
         : walls_(walls), wallCells_(wallCells), dx_(dx), clearance_(0.5 * dx * (1.0 - 1e-9)), oneLayerPatch_(walls.patchNames.size(), true) {
-        for (std::size_t j = 0; j < walls.particles.layers.size(); ++j)
+        for (std::size_t j = 0; j < walls.particles.layers.size(); ++j) {
             if (walls.particles.layers[j] > 0) oneLayerPatch_[static_cast<std::size_t>(walls.patchOf[j])] = false;
+            reach_ = std::max(reach_, std::hypot(clearance_, halfElement(j)));
+        }
     }
 
     // Where the point at x goes: moved clear of the walls, or nowhere (dropped).
@@ -227,9 +233,13 @@ public:
             bool drop = false;
             double deepest = 0.0;
             Vec<D> push = Vec<D>::Zero();
-            wallCells_.forEachNeighbour(x, clearance_, [&](std::uint32_t j, const Vec<D>& fromWall, double) {
+            wallCells_.forEachNeighbour(x, reach_, [&](std::uint32_t j, const Vec<D>& fromWall, double r2) {
                 const double gap = fromWall.dot(walls_.particles.normals[j]);
-                if (!oneLayerPatch_[static_cast<std::size_t>(walls_.patchOf[j])] || gap <= 0.0)
+                const bool oneLayer = oneLayerPatch_[static_cast<std::size_t>(walls_.patchOf[j])];
+                const bool overlaps =
+                    r2 < clearance_ * clearance_ || (oneLayer && gap < clearance_ && r2 - gap * gap <= halfElement(j) * halfElement(j));
+                if (!overlaps) return;
+                if (!oneLayer || gap <= 0.0)
                     drop = true;
                 else if (0.5 * dx_ - gap > deepest) {
                     deepest = 0.5 * dx_ - gap;
@@ -246,9 +256,14 @@ public:
     }
 
 private:
+    // How far along the wall wall particle j's element reaches from it: half its spacing in 2D,
+    // half the diagonal of its square in 3D.
+    double halfElement(std::size_t j) const { return 0.5 * walls_.particles.spacings[j] * std::sqrt(D - 1.0) * (1.0 + 1e-9); }
+
     const GeneratedWalls<D>& walls_;
     const SparseCellList<D>& wallCells_;
     double dx_, clearance_;
+    double reach_ = 0.0;  // the furthest a wall particle can be from a point that overlaps its element
     std::vector<bool> oneLayerPatch_;
 };
 

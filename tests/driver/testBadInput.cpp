@@ -170,7 +170,7 @@ TEST(BadInput, SolidBelowWhatTheSpacingResolves) {
         ADD_FAILURE() << "a triangle of 1 dx generated";
     } catch (const sph::FatalError& e) {
         expectContains(e.what(),
-                       "wall patch 'block' has fluid on both sides: 3 of the 8 fluid particles next to it lie behind its wall particles' "
+                       "wall patch 'block' has fluid on both sides: 2 of the 7 fluid particles next to it lie behind its wall particles' "
                        "normals (a solid body this small is below what the spacing resolves");
     }
     EXPECT_NO_THROW(sph::generateParticles(triangle(8.0), true));

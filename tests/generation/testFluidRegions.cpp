@@ -165,3 +165,20 @@ TEST(FluidRegions, FluidInFrontOfAOneLayerWallIsMovedOutToHalfASpacingNotDropped
     EXPECT_GT(layered.droppedFluidParticles, 0u);
     EXPECT_EQ(layered.fluidParticles + layered.droppedFluidParticles, inside);
 }
+
+TEST(FluidRegions, FluidBetweenTheParticlesOfACurvedOneLayerWallIsMovedOutToo) {
+    // cylinderArray2D: the lattice around a cylinder of radius 0.0252313 with one layer of wall
+    // particles on it. A lattice point between two wall particles can be further than dx/2 from
+    // both and yet 0.13 dx from the surface; it too is moved out, to dx/2 in front of the
+    // element it faces (the chord between particles sits inside the circle by 0.005 dx).
+    const auto dir = sph::test::copyCase("cylinderArray2D");
+    const double dx = 0.002, radius = 0.0252313;
+    const GenerationSummary summary = generateParticles(dir, true);
+    EXPECT_EQ(summary.fluidParticles, 2000u);  // every lattice point outside the circle
+    StateHeader header;
+    const ParticleSet<2> fluid = readParticleFile<2>(dir / "0/fluid.vtu", "fluid", header);
+    double closest = 1.0;
+    for (const Vec<2>& x : fluid.position) closest = std::min(closest, (x - Vec<2>(0.05, 0.05)).norm() - radius);
+    EXPECT_GT(closest, 0.49 * dx);
+    EXPECT_LT(closest, 0.5 * dx * 1.001);  // some were moved there
+}
