@@ -217,10 +217,13 @@ FluidModels<D> selectFluidModels(const Dictionary& schemes, Kernel<D> kernel, co
     const Dictionary& viscosityDict = schemes.subDict("viscosity");
     Viscosity viscosity = selectByType(makeViscosityRegistry(), viscosityDict, viscosityDict, context);
     fmt::print("Selecting viscosity {}\n", describe(viscosity));
-    const Dictionary& diffusionDict = schemes.subDict("densityDiffusion");
-    DensityDiffusion<D> diffusion = selectByType(makeDensityDiffusionRegistry<D>(), diffusionDict, diffusionDict, context);
-    if (density == DensityFormulation::Summation && !std::holds_alternative<NoDensityDiffusion>(diffusion))
-        diffusionDict.fail("type", "density diffusion acts on the continuity equation; with summation density select 'none'");
+    // Summation density has nothing to diffuse: there the keyword may be left out.
+    const bool summation = density == DensityFormulation::Summation;
+    const Dictionary* diffusionDict = summation ? schemes.findSubDict("densityDiffusion") : &schemes.subDict("densityDiffusion");
+    DensityDiffusion<D> diffusion =
+        diffusionDict ? selectByType(makeDensityDiffusionRegistry<D>(), *diffusionDict, *diffusionDict, context) : NoDensityDiffusion{};
+    if (summation && !std::holds_alternative<NoDensityDiffusion>(diffusion))
+        diffusionDict->fail("type", "density diffusion acts on the continuity equation; with summation density select 'none' or leave it out");
     fmt::print("Selecting densityDiffusion {}\n", describe<D>(diffusion));
     // Optional: a case that does not name it shifts nothing.
     const Dictionary* shiftingDict = schemes.findSubDict("particleShifting");

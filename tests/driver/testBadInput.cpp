@@ -330,7 +330,15 @@ TEST(BadInput, PatchThatIsNotInTheState) {
 TEST(BadInput, DiffusionWithSummationDensity) {
     const auto dir = copyCase("damBreak2D");
     replaceInFile(dir / "system/sphSchemes", "type continuity;", "type summation;");
-    expectContains(failureOf(dir), "density diffusion acts on the continuity equation; with summation density select 'none'");
+    expectContains(failureOf(dir), "density diffusion acts on the continuity equation; with summation density select 'none' or leave it out");
+}
+
+TEST(BadInput, DiffusionKeywordIsNeededWithContinuityDensityOnly) {
+    const auto dir = coarseDamBreak("0.002");
+    replaceInFile(dir / "system/sphSchemes", "densityDiffusion    { type fourtakas; delta 0.1; }", "");
+    expectContains(failureOf(dir, false), "keyword 'densityDiffusion' is missing from dictionary 'sphSchemes'");
+    replaceInFile(dir / "system/sphSchemes", "type continuity;", "type summation;");
+    EXPECT_EQ(failureOf(dir, false), "");  // summation density has nothing to diffuse
 }
 
 TEST(BadInput, SpeedOfSoundMissing) {
